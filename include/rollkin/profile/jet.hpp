@@ -6,7 +6,7 @@
 //
 //   using Scalar = S;
 //   Domain<S> domain() const;                  // parameter interval; closed contours wrap
-//   ParamKind parameter_kind() const;          // Angle (printed in degrees) or Length (scene units)
+//   ParamKind parameter_kind() const;          // Angle (degrees in files), Length (scene units), Unitless
 //   int continuity() const;                    // k of C^k in u (analytic curves: 3, i.e. "C3 or better")
 //   Jet<S> jet(const S& u, int order) const;   // p and its derivatives d^k p / du^k for k <= order <= 3
 //   S arc_length(const S& u0, const S& u1) const;        // signed arc length from u0 to u1 (eq. 4)
@@ -23,9 +23,13 @@
 
 namespace rollkin {
 
-enum class ParamKind { Angle, Length };
+/// How a contact parameter is reported: angles in degrees, lengths in scene units, a Bezier path's
+/// segment parameter as a plain number.
+enum class ParamKind { Angle, Length, Unitless };
 
-inline const char* to_string(ParamKind k) { return k == ParamKind::Angle ? "angle" : "length"; }
+inline const char* to_string(ParamKind k) {
+  return k == ParamKind::Angle ? "angle" : (k == ParamKind::Length ? "length" : "unitless");
+}
 
 template <class S> struct Domain {
   S lo, hi;
