@@ -1,0 +1,187 @@
+// Standalone SVG output, independent of mechanisms.
+//
+//  - SvgChart: a 2-D line chart like a paper's figure (joint variables against the crank angle): title, axis
+//    labels, several named series of (x, y) points, automatic "nice" ticks, grid, legend, fixed pixel size.
+//    A non-finite x or y in a series breaks its line (no segment is drawn across it).
+//  - SvgDrawing: a world-coordinate canvas (y up) for pictures of mechanisms: polylines (open or closed),
+//    circles with a world radius, point markers and small text labels, scaled uniformly to fit all content
+//    inside the picture with a margin (or into a fixed world box). Stroke widths, marker sizes and font
+//    sizes are in pixels, so they do not depend on the world scale.
+//
+// Both write files atomically (io/atomic_file.hpp): PATH.tmp, then rename; on failure no file is left
+// behind and std::runtime_error names PATH. Colours are any SVG colour string ("#1f77b4", "red", ...).
+// Text is XML-escaped. Pixel coordinates are written with two decimals.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace rollkin::io {
+
+/// The default colour cycle (10 distinguishable colours); palette_color(i) wraps around.
+const std::vector<std::string>& default_palette();
+const std::string& palette_color(std::size_t i);
+
+/// XML text escaping of &, <, >, " and '.
+std::string xml_escape(const std::string& text);
+
+/// Tick values for an axis: `values` are multiples of `step` (1, 2, 2.5 or 5 times a power of ten) from `lo`
+/// to `hi` inclusive, where [lo, hi] is the data interval widened to whole steps. Degenerate or non-finite
+/// input is widened to a usable interval.
+struct Ticks {
+  double lo = 0, hi = 1, step = 0.2;
+  std::vector<double> values;
+};
+Ticks nice_ticks(double lo, double hi, int target_intervals = 6);
+
+/// Tick values inside a fixed [lo, hi] (lo and hi are kept, not widened).
+Ticks ticks_in_range(double lo, double hi, int target_intervals = 6);
+
+/// Ticks with a given step: the multiples of step in [lo, hi], or, when widen is true, [lo, hi] widened to
+/// whole steps first. Throws std::invalid_argument for a step that is not positive and finite.
+Ticks ticks_with_step(double lo, double hi, double step, bool widen);
+
+/// Label of a tick value: as many decimals as the step needs ("0.25", "90", "-180"), never "-0".
+std::string format_tick(double value, double step);
+
+// ---- chart ---------------------------------------------------------------------------------------------
+
+struct ChartSeries {
+  std::string name;          // shown in the legend and as data-name of the series' <g>
+  std::vector<double> x, y;  // equal sizes; a non-finite x or y breaks the line
+  std::string color;         // empty: palette_color(index of the series)
+  double stroke_width = 1.6; // px
+  std::string dash;          // SVG stroke-dasharray, e.g. "6 3"; empty: solid
+  bool markers = false;      // a small circle at every finite point
+};
+
+enum class LegendPosition { TopRight, TopLeft, BottomRight, BottomLeft, Outside, None };
+
+class SvgChart {
+ public:
+  explicit SvgChart(int width_px = 720, int height_px = 450);
+
+  SvgChart& set_title(std::string title);
+  SvgChart& set_x_label(std::string label);
+  SvgChart& set_y_label(std::string label);
+  /// Fixed axis ranges (default: automatic, widened to nice ticks). lo < hi required.
+  SvgChart& set_x_range(double lo, double hi);
+  SvgChart& set_y_range(double lo, double hi);
+  /// Preferred number of tick intervals per axis (default 6 for x, 5 for y).
+  SvgChart& set_tick_target(int x_intervals, int y_intervals);
+  /// Fixed tick steps (e.g. 45 or 90 for angles in degrees); 0 restores the automatic nice step.
+  SvgChart& set_tick_steps(double x_step, double y_step);
+  SvgChart& set_legend(LegendPosition position);
+  SvgChart& set_grid(bool on);
+
+  /// Adds a series; throws std::invalid_argument when x and y differ in size.
+  SvgChart& add_series(ChartSeries series);
+  SvgChart& add_series(std::string name, std::vector<double> x, std::vector<double> y, std::string color = {});
+
+  const std::vector<ChartSeries>& series() const { return series_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  /// The ticks actually used for the axes (automatic or fixed ranges).
+  Ticks x_ticks() const;
+  Ticks y_ticks() const;
+
+  /// The complete SVG document.
+  std::string to_svg() const;
+  /// Writes to_svg() atomically; throws std::runtime_error naming the path on failure.
+  void write(const std::string& path) const;
+
+ private:
+  int width_, height_;
+  std::string title_, x_label_, y_label_;
+  bool x_fixed_ = false, y_fixed_ = false;
+  double x_lo_ = 0, x_hi_ = 1, y_lo_ = 0, y_hi_ = 1;
+  int x_target_ = 6, y_target_ = 5;
+  double x_step_ = 0, y_step_ = 0;
+  LegendPosition legend_ = LegendPosition::TopRight;
+  bool grid_ = true;
+  std::vector<ChartSeries> series_;
+};
+
+// ---- drawing -------------------------------------------------------------------------------------------
+
+struct Stroke {
+  std::string color = "#000000";
+  double width = 1.0;    // px
+  double opacity = 1.0;  // 0..1
+  std::string dash;      // SVG stroke-dasharray; empty: solid
+};
+
+struct Fill {
+  std::string color;     // empty: no fill
+  double opacity = 1.0;  // 0..1
+};
+
+enum class Marker { Dot, Circle, Cross, Square };
+
+class SvgDrawing {
+ public:
+  explicit SvgDrawing(int width_px = 800, int height_px = 600, double margin_px = 24);
+
+  SvgDrawing& set_title(std::string title);        // drawn at the top, also the document <title>
+  SvgDrawing& set_background(std::string color);   // empty: transparent (default "#ffffff")
+  /// Fixed world box instead of fitting the content (xmin < xmax, ymin < ymax).
+  SvgDrawing& set_world_box(double xmin, double ymin, double xmax, double ymax);
+
+  /// Polyline through world points. A non-finite point breaks it into separate pieces; a closed polyline
+  /// without breaks is drawn as a <polygon> (optionally filled), with breaks as open pieces.
+  SvgDrawing& add_polyline(const std::vector<Eigen::Vector2d>& points, const Stroke& stroke = {},
+                           bool closed = false, const Fill& fill = {});
+  /// Circle of world radius r.
+  SvgDrawing& add_circle(const Eigen::Vector2d& center, double radius, const Stroke& stroke = {},
+                         const Fill& fill = {});
+  /// Marker of a fixed pixel size at a world point.
+  SvgDrawing& add_point(const Eigen::Vector2d& p, const std::string& color = "#000000", double size_px = 3.0,
+                        Marker marker = Marker::Dot);
+  /// Small text label; its anchor (start of the baseline, offset by (dx, dy) px, dy down) at world point p.
+  SvgDrawing& add_text(const Eigen::Vector2d& p, std::string text, double size_px = 11.0,
+                       const std::string& color = "#000000", double dx_px = 4.0, double dy_px = -4.0);
+
+  /// World bounding box of all content: (xmin, ymin, xmax, ymax); a unit box around the origin when empty.
+  Eigen::Vector4d content_box() const;
+  /// World to pixel coordinates (y flipped) for the current content / world box.
+  Eigen::Vector2d to_pixel(const Eigen::Vector2d& world) const;
+  /// Pixels per world unit.
+  double scale() const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t size() const { return items_.size(); }
+
+  std::string to_svg() const;
+  void write(const std::string& path) const;
+
+ private:
+  enum class Kind { Polyline, Circle, Point, Text };
+  struct Item {
+    Kind kind = Kind::Polyline;
+    std::vector<Eigen::Vector2d> points;  // polyline points, or the single anchor / centre
+    Stroke stroke;
+    Fill fill;
+    bool closed = false;
+    double radius = 0;  // circle: world radius; point: px size
+    Marker marker = Marker::Dot;
+    std::string text, color;
+    double size = 11, dx = 0, dy = 0;
+  };
+  struct View {
+    double scale, ox, oy;  // pixel = (ox + scale * x, oy - scale * y)
+  };
+  View view() const;
+
+  int width_, height_;
+  double margin_;
+  std::string title_, background_ = "#ffffff";
+  bool fixed_box_ = false;
+  Eigen::Vector4d box_ = Eigen::Vector4d(0, 0, 1, 1);
+  std::vector<Item> items_;
+};
+
+}  // namespace rollkin::io

@@ -1,0 +1,132 @@
+// CSV writer: header, full round-trip precision of doubles, RFC 4180 quoting of the text column, argument
+// checks, and atomic writes (no partial file, error names the path).
+#define BOOST_TEST_MODULE io_csv
+#include <boost/test/unit_test.hpp>
+
+#include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/csv.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace rollkin::io;
+
+namespace {
+
+fs::path out_dir() {
+  const fs::path d = fs::path(ROLLKIN_BINARY_DIR) / "test_output" / "io_csv";
+  fs::create_directories(d);
+  return d;
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  std::string l;
+  while (std::getline(in, l)) out.push_back(l);
+  return out;
+}
+
+std::vector<std::string> split(const std::string& l) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : l) {
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(round_trip_precision) {
+  const std::vector<double> values = {0.1,
+                                      1.0 / 3.0,
+                                      3.141592653589793,
+                                      -2.5e300,
+                                      1e-300,
+                                      std::numeric_limits<double>::denorm_min(),
+                                      std::numeric_limits<double>::max(),
+                                      std::nextafter(1.0, 2.0),
+                                      -0.0,
+                                      123456789.0};
+  for (double v : values) {
+    const std::string s = format_double(v);
+    BOOST_TEST_CONTEXT(s) { BOOST_TEST(same_bits(std::strtod(s.c_str(), nullptr), v)); }
+  }
+  BOOST_TEST(format_double(0.5) == "0.5");
+  BOOST_TEST(format_double(std::nan("")) == "nan");
+  BOOST_TEST(format_double(-std::numeric_limits<double>::infinity()) == "-inf");
+}
+
+BOOST_AUTO_TEST_CASE(table_layout_and_quoting) {
+  CsvWriter csv({"theta2_deg", "x", "theta23_deg"}, "status");
+  csv.add_row({0.0, 0.1, 1.0 / 3.0}, "ok");
+  csv.add_row({10.0, std::nan(""), -1e-17}, "singular, rank 4");
+  csv.add_row({20.0, 2.0, 3.0}, "said \"no\"");
+  csv.add_row({30.0, 2.0, 3.0});
+  BOOST_TEST(csv.rows() == 4u);
+  BOOST_TEST(csv.columns() == 4u);
+  const auto ls = lines(csv.to_string());
+  BOOST_REQUIRE_EQUAL(ls.size(), 5u);
+  BOOST_TEST(ls[0] == "theta2_deg,x,theta23_deg,status");
+  BOOST_TEST(ls[1] == "0,0.10000000000000001,0.33333333333333331,ok");
+  BOOST_TEST(ls[2] == "10,nan,-1.0000000000000001e-17,\"singular, rank 4\"");
+  BOOST_TEST(ls[3] == "20,2,3,\"said \"\"no\"\"\"");
+  BOOST_TEST(ls[4] == "30,2,3,");
+  // Numeric fields parse back exactly.
+  const auto f = split(ls[1]);
+  BOOST_TEST(same_bits(std::strtod(f[2].c_str(), nullptr), 1.0 / 3.0));
+
+  // Without a text column: no trailing field; header names with commas are quoted.
+  CsvWriter plain({"a,b", "c"});
+  plain.add_row({1, 2});
+  BOOST_TEST(plain.to_string() == "\"a,b\",c\n1,2\n");
+  BOOST_TEST(csv_field("x\ny") == "\"x\ny\"");
+
+  BOOST_CHECK_THROW(csv.add_row({1.0, 2.0}), std::invalid_argument);
+  BOOST_CHECK_THROW(plain.add_row({1.0, 2.0}, "text"), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(atomic_write) {
+  CsvWriter csv({"a"}, "note");
+  csv.add_row({1.5}, "x");
+  const fs::path file = out_dir() / "table.csv";
+  { std::ofstream(file) << "stale"; }
+  csv.write(file.string());
+  BOOST_TEST(read_file(file) == "a,note\n1.5,x\n");
+  BOOST_TEST(!fs::exists(temporary_path(file.string())));
+
+  const fs::path missing = out_dir() / "no-such-dir" / "table.csv";
+  fs::remove_all(missing.parent_path());
+  try {
+    csv.write(missing.string());
+    BOOST_FAIL("write into a missing directory must throw");
+  } catch (const std::runtime_error& e) {
+    BOOST_TEST(std::string(e.what()).find(missing.string()) != std::string::npos);
+  }
+  BOOST_TEST(!fs::exists(missing));
+  BOOST_TEST(!fs::exists(temporary_path(missing.string())));
+}
