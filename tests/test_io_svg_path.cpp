@@ -1,0 +1,216 @@
+#define BOOST_TEST_MODULE io_svg_path
+#include <boost/test/unit_test.hpp>
+
+#include "rollkin/io/svg_path.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using rollkin::BezierPath;
+using rollkin::InputError;
+using rollkin::parse_svg_path_data;
+using rollkin::SvgPathOptions;
+using rollkin::SvgSubpath;
+using V = rollkin::Vec2<double>;
+
+namespace {
+
+const SvgPathOptions kNoFlip{false, 1.0};
+
+std::vector<SvgSubpath> parse(const std::string& d) { return parse_svg_path_data(d, kNoFlip); }
+
+/// End points of all segments of the first subpath.
+std::vector<V> ends(const std::string& d) {
+  const auto subpaths = parse(d);
+  std::vector<V> out;
+  for (const auto& s : subpaths.at(0).segments) out.push_back(s.points.back());
+  return out;
+}
+
+bool same(const V& a, const V& b) { return (a - b).norm() < 1e-14; }
+
+std::string error_for(const std::string& d) {
+  try {
+    parse_svg_path_data(d, kNoFlip, "shape.svg", "cam");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+  if (s.find(part) != std::string::npos) return true;
+  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
+  return false;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "rollkin_test_io_svg_path";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(lines_absolute_relative_and_close) {
+  const auto subs = parse("M 10 20 L 30 40 H 50 V 60 l 5 5 h -5 v -5 Z");
+  BOOST_TEST(subs.size() == 1u);
+  BOOST_TEST(subs[0].closed);
+  const std::vector<V> expected{V(30, 40), V(50, 40), V(50, 60), V(55, 65), V(50, 65), V(50, 60), V(10, 20)};
+  const auto& segs = subs[0].segments;
+  BOOST_TEST(segs.size() == expected.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    BOOST_TEST(segs[i].degree() == 1);
+    BOOST_TEST(same(segs[i].points.back(), expected[i]));
+  }
+  BOOST_TEST(same(segs[0].points.front(), V(10, 20)));
+}
+
+BOOST_AUTO_TEST_CASE(implicit_repetition_and_compact_numbers) {
+  const auto e = ends("M 0 0 1 1 2 0");  // extra pairs after M are line-tos
+  BOOST_TEST(e.size() == 2u);
+  BOOST_TEST(same(e[1], V(2, 0)));
+  const auto r = parse("m 1 1 2 2");
+  BOOST_TEST(same(r[0].segments[0].points.front(), V(1, 1)));
+  BOOST_TEST(same(r[0].segments[0].points.back(), V(3, 3)));
+  const auto c = parse("M-.5.5L1e-1-2l.5-.5,1E1 0");
+  BOOST_TEST(same(c[0].segments[0].points.front(), V(-0.5, 0.5)));
+  BOOST_TEST(same(c[0].segments[0].points.back(), V(0.1, -2)));
+  BOOST_TEST(same(c[0].segments[1].points.back(), V(0.6, -2.5)));
+  BOOST_TEST(same(c[0].segments[2].points.back(), V(10.6, -2.5)));
+  const auto two = parse("M0 0 L1 0 M 5 5 L 6 6");
+  BOOST_TEST(two.size() == 2u);
+  BOOST_TEST(!two[0].closed);
+}
+
+BOOST_AUTO_TEST_CASE(cubic_and_quadratic_with_reflection) {
+  const auto c = parse("M0 0 C 1 2 3 4 5 6 S 9 10 11 12 s 1 1 2 0")[0].segments;
+  BOOST_TEST(c.size() == 3u);
+  BOOST_TEST(c[0].degree() == 3);
+  BOOST_TEST(same(c[1].points[1], V(7, 8)));  // (3, 4) reflected through (5, 6)
+  BOOST_TEST(same(c[1].points[2], V(9, 10)));
+  BOOST_TEST(same(c[2].points[1], V(13, 14)));  // (9, 10) reflected through (11, 12)
+  BOOST_TEST(same(c[2].points[2], V(12, 13)));
+  BOOST_TEST(same(c[2].points[3], V(13, 12)));
+  const auto rc = parse("M1 1 c 1 0 2 1 2 2")[0].segments[0];
+  BOOST_TEST(same(rc.points[1], V(2, 1)));
+  BOOST_TEST(same(rc.points[3], V(3, 3)));
+  const auto q = parse("M0 0 Q 1 1 2 0 T 4 0 t 2 0")[0].segments;
+  BOOST_TEST(q[0].degree() == 2);
+  BOOST_TEST(same(q[1].points[1], V(3, -1)));  // (1, 1) reflected through (2, 0)
+  BOOST_TEST(same(q[2].points[1], V(5, 1)));
+  BOOST_TEST(same(q[2].points[2], V(6, 0)));
+  // S without a preceding C uses the current point as first control point.
+  BOOST_TEST(same(parse("M0 0 L 1 0 S 2 1 3 0")[0].segments[1].points[1], V(1, 0)));
+}
+
+BOOST_AUTO_TEST_CASE(arc_flags_compact_and_endpoints) {
+  const auto a = parse("M0 0a 1 1 0 01 1 1");  // large-arc 0, sweep 1 packed as "01"
+  const auto& segs = a[0].segments;
+  BOOST_TEST(segs.size() == 1u);
+  BOOST_TEST(segs[0].rational());
+  BOOST_TEST(same(segs[0].points.back(), V(1, 1)));
+  // Quarter circle of radius 1: centre at (1, 0) or (0, 1); sweep 1 (clockwise on screen) gives (0, 1).
+  const BezierPath<double> p(segs, false);
+  for (double u = 0; u <= 1; u += 0.05) BOOST_TEST(std::abs((p.jet(u, 0).p - V(0, 1)).norm() - 1) < 1e-15);
+  BOOST_TEST(std::abs(segs[0].weights[1] - std::sqrt(0.5)) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(arc_reproduces_the_circle_exactly) {
+  const auto subs = parse("M 3 2 A 2 2 0 1 1 -1 2 A 2 2 0 1 1 3 2 Z");  // full circle, centre (1, 2)
+  BOOST_TEST(subs[0].closed);
+  BOOST_TEST(subs[0].segments.size() == 4u);  // two half circles, two quarter pieces each
+  const BezierPath<double> circle(subs[0].segments, true);
+  double worst = 0;
+  for (int k = 0; k <= 400; ++k) {
+    const auto j = circle.jet(k / 100.0, 2);
+    worst = std::max(worst, std::abs((j.p - V(1, 2)).norm() - 2));
+    BOOST_TEST(std::abs(std::abs(rollkin::contour_point(j, 2).curvature()) - 0.5) < 1e-14);
+  }
+  BOOST_TEST(worst < 1e-14);
+  BOOST_TEST(std::abs(circle.total_length() - 4 * M_PI) < 1e-13);
+  // Sweep 1 passes through the screen-"positive" angle side: (1, 4) in y-down coordinates.
+  BOOST_TEST(same(circle.jet(1.0, 0).p, V(1, 4)));
+  // Flipped into y-up: the same point becomes (1, -4); points stay on the mirrored circle.
+  const auto flipped = parse_svg_path_data("M 3 2 A 2 2 0 1 1 -1 2 A 2 2 0 1 1 3 2 Z");
+  const BezierPath<double> fc(flipped[0].segments, true);
+  BOOST_TEST(same(fc.jet(1.0, 0).p, V(1, -4)));
+  BOOST_TEST(std::abs((fc.jet(0.37, 0).p - V(1, -2)).norm() - 2) < 1e-14);
+}
+
+BOOST_AUTO_TEST_CASE(arc_radii_correction_and_rotated_ellipse) {
+  // Radius 1 cannot span a chord of 4: scaled to 2, a half circle centred at (2, 0).
+  const auto small = parse("M 0 0 A 1 1 0 0 1 4 0")[0].segments;
+  const BezierPath<double> half(small, false);
+  for (double u = 0; u <= 2; u += 0.1) BOOST_TEST(std::abs((half.jet(u, 0).p - V(2, 0)).norm() - 2) < 1e-14);
+  // Ellipse rx = 2, ry = 1 rotated 30 degrees, centre (0, 0): from its +a vertex to its +b vertex.
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  const V a_vertex(2 * c, 2 * s), b_vertex(-s, c);
+  const std::string d = "M " + std::to_string(a_vertex.x()) + " " + std::to_string(a_vertex.y()) + " A 2 1 30 0 1 " +
+                        std::to_string(b_vertex.x()) + " " + std::to_string(b_vertex.y());
+  const auto segs = parse(d)[0].segments;
+  const BezierPath<double> arc(segs, false);
+  for (double u = 0; u <= arc.domain().hi; u += 0.05) {
+    const V p = arc.jet(u, 0).p;
+    const double x = c * p.x() + s * p.y(), y = -s * p.x() + c * p.y();
+    BOOST_TEST(std::abs(x * x / 4 + y * y - 1) < 1e-6);  // endpoints were printed with 6 decimals
+  }
+  BOOST_TEST(same(segs.back().points.back(), V(std::stod(std::to_string(b_vertex.x())), std::stod(std::to_string(b_vertex.y())))));
+  // Zero radius: a straight line.
+  BOOST_TEST(parse("M 0 0 A 0 1 0 0 1 4 0")[0].segments[0].degree() == 1);
+}
+
+BOOST_AUTO_TEST_CASE(flip_and_scale) {
+  const auto subs = parse_svg_path_data("M 1 2 L 3 4", SvgPathOptions{true, 10.0});
+  BOOST_TEST(same(subs[0].segments[0].points[0], V(10, -20)));
+  BOOST_TEST(same(subs[0].segments[0].points[1], V(30, -40)));
+}
+
+BOOST_AUTO_TEST_CASE(path_data_errors_give_offsets) {
+  BOOST_TEST(contains(error_for("L 0 0"), "shape.svg:path \"cam\", d offset 0: path data must begin with a moveto"));
+  BOOST_TEST(contains(error_for(""), "empty"));
+  BOOST_TEST(contains(error_for("M 0 0 X 1"), "d offset 6: unknown path command 'X'"));
+  BOOST_TEST(contains(error_for("M 0 0 L 1"), "d offset 9: expected a number (argument 2 of 2 of the 'L' command), got the end"));
+  BOOST_TEST(contains(error_for("M 0 0 C 1 1 2 x 3 3"), "d offset 14: expected a number (argument 4 of 6"));
+  BOOST_TEST(contains(error_for("M0 0 A 1 1 0 2 1 3 3"), "d offset 13: expected a flag 0 or 1"));
+  BOOST_TEST(contains(error_for("M 0 0 Z 1 1"), "d offset 8: unexpected character '1'"));
+}
+
+BOOST_AUTO_TEST_CASE(svg_file_path_by_id) {
+  const std::string svg = write_temp("drawing.svg",
+      "<?xml version=\"1.0\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\">\n"
+      "  <!-- <path id=\"cam\" d=\"M 9 9 L 8 8\"/> is commented out -->\n"
+      "  <path d=\"M 0 0 L 1 0\" id=\"first\"/>\n"
+      "  <g><path\n     id='cam' style=\"fill:none\"\n     d='M 0 0 C 1 0 2 1 2 2'/></g>\n"
+      "  <path id=\"moved\" transform=\"translate(5,0)\" d=\"M 0 0 L 1 1\"/>\n"
+      "</svg>\n");
+  BOOST_TEST(rollkin::read_svg_path_data(svg, "first") == "M 0 0 L 1 0");
+  const auto cam = rollkin::read_svg_path(svg, "cam", kNoFlip);
+  BOOST_TEST(cam[0].segments[0].degree() == 3);
+  BOOST_TEST(same(cam[0].segments[0].points[3], V(2, 2)));
+  try {
+    rollkin::read_svg_path(svg, "moved");
+    BOOST_FAIL("transform accepted");
+  } catch (const InputError& e) {
+    BOOST_TEST(contains(e.what(), "drawing.svg:line 8: path \"moved\" has transform=\"translate(5,0)\""));
+  }
+  try {
+    rollkin::read_svg_path(svg, "nothere");
+    BOOST_FAIL("missing id accepted");
+  } catch (const InputError& e) {
+    BOOST_TEST(contains(e.what(), "no <path> element with id=\"nothere\"; path ids found: first, cam, moved"));
+  }
+  BOOST_CHECK_THROW(rollkin::read_svg_path("/nonexistent/drawing.svg", "cam"), InputError);
+  // Errors inside d name the file and the path id.
+  const std::string bad = write_temp("bad.svg", "<svg><path id=\"p\" d=\"M 0 0 L 1\"/></svg>");
+  try {
+    rollkin::read_svg_path(bad, "p");
+    BOOST_FAIL("bad d accepted");
+  } catch (const InputError& e) {
+    BOOST_TEST(contains(e.what(), "bad.svg:path \"p\", d offset 9: expected a number"));
+  }
+}
