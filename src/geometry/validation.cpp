@@ -3,7 +3,8 @@
 // crossing points and the signed area, both informational.
 #include "rollkin/geometry/validation.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "epick.hpp"
+
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 
@@ -16,17 +17,16 @@
 namespace rollkin::geometry {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_2;
-using Segment = Kernel::Segment_2;
+using detail::common_point;
+using detail::to_point;
+using Point = detail::Point2;
+using Segment = detail::Segment2;
 // A segment's bounding box carrying the segment's index; ID_EXPLICIT because box_self_intersection_d
 // works on copies of the boxes.
 using SegmentBox = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
 
 // Warn when the implicit closing segment is longer than this many times the longest explicit segment.
 constexpr double kClosingSegmentRatio = 4.0;
-
-Point to_point(const Vec2<double>& v) { return Point(v.x(), v.y()); }
 
 bool is_finite(const Vec2<double>& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
@@ -147,16 +147,6 @@ std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(const std::vecto
   });
   std::sort(pairs.begin(), pairs.end());
   return pairs;
-}
-
-/// A point common to two intersecting segments: the crossing point, or for overlapping collinear
-/// segments the start of the overlap (EPICK construction, not exact).
-Vec2<double> common_point(const Segment& s, const Segment& t) {
-  const auto result = CGAL::intersection(s, t);
-  if (!result) return Vec2<double>(s.source().x(), s.source().y());
-  if (const Point* p = boost::get<Point>(&*result)) return Vec2<double>(p->x(), p->y());
-  const Segment& overlap = boost::get<Segment>(*result);
-  return Vec2<double>(overlap.source().x(), overlap.source().y());
 }
 
 std::size_t check_self_intersections(const std::vector<Vec2<double>>& pts, std::size_t n, bool closed,

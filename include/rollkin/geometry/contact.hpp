@@ -1,0 +1,74 @@
+// Contact between two sampled contours placed in one common (world) frame: where they are closest, whether
+// they cross, and how many separate zones touch. Used to find the initial contact of an assembly without
+// contact parameters from the user, and to flag "contours penetrate" or "touch at a second point" along a
+// sweep.
+//
+// Part of the CGAL boundary: plain types here, CGAL (EPICK, AABB tree, box_intersection_d) in
+// src/geometry/contact.cpp. Polylines follow the sample convention of validation.hpp: segment i joins
+// sample i to sample i + 1; a closed polyline has the implicit closing segment n - 1 -> 0 and does not
+// repeat its first sample.
+#pragma once
+
+#include "rollkin/scalar.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace rollkin::geometry {
+
+/// A point on a polyline: point = (1 - fraction) p_segment + fraction p_(segment + 1), fraction in [0, 1].
+struct PolylinePoint {
+  std::size_t segment = 0;
+  double fraction = 0;
+  Vec2<double> point = Vec2<double>::Zero();
+};
+
+/// The closest pair of points of two polylines. When they intersect, distance is 0 and both points are
+/// the crossing point of the lowest-numbered crossing segment of `a` (and, for it, of `b`).
+struct ContactCandidate {
+  PolylinePoint on_a, on_b;
+  double distance = 0;
+  bool intersect = false;
+};
+
+/// Closest points of two polylines (each at least 2 samples; closed ones at least 3). Crossings are found
+/// as in check_interference (box intersection, exact do_intersect). Without a crossing the minimum distance
+/// between two segments is attained at an endpoint of one of them, so it is the least distance from a
+/// sample of either polyline to the other one: CGAL AABB-tree closest-point queries, each hinted with the
+/// previous answer, samples skipped when the triangle inequality shows they cannot beat the best so far.
+/// Throws std::invalid_argument for too few samples.
+ContactCandidate find_contact(const std::vector<Vec2<double>>& a, bool a_closed, const std::vector<Vec2<double>>& b,
+                              bool b_closed);
+
+/// Where the polylines cross: the same point on both.
+struct Crossing {
+  PolylinePoint on_a, on_b;
+};
+
+/// One connected region where the polylines are within touch_tol of each other: the segments involved on
+/// each (sorted indices) and the closest pair in it.
+struct ContactZone {
+  std::vector<std::size_t> a_segments, b_segments;
+  PolylinePoint on_a, on_b;  // closest pair within the zone
+  double distance = 0;
+  bool penetrating = false;  // the zone contains a crossing
+};
+
+struct InterferenceReport {
+  bool penetrate = false;           // some segments of a and b cross (or touch exactly)
+  std::vector<Crossing> crossings;  // sorted by (a segment, b segment); a crossing exactly at a sample
+                                    // appears once for each segment meeting there
+  std::vector<ContactZone> zones;   // sorted by their closest pair's a segment
+
+  std::size_t zone_count() const { return zones.size(); }
+};
+
+/// Crossings and touching zones of two polylines. Segment pairs closer than touch_tol (distance <=
+/// touch_tol) are found with CGAL::box_intersection_d on segment boxes grown by touch_tol, then measured
+/// with EPICK squared_distance; crossings are decided by the exact predicate do_intersect. Two near pairs
+/// belong to the same zone when they share a segment or their segments are consecutive on a or on b
+/// (union-find), so a smooth tangential contact is one zone however finely it is sampled.
+InterferenceReport check_interference(const std::vector<Vec2<double>>& a, bool a_closed,
+                                      const std::vector<Vec2<double>>& b, bool b_closed, double touch_tol);
+
+}  // namespace rollkin::geometry
