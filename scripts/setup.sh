@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# One-step set-up shared by the README commands and CI (.ci/run):
+#   1. install the Debian 12 packages the build needs, only those missing (apt-get as root, else sudo);
+#   2. configure with CMake into build/ (Release);
+#   3. build everything (library, command-line tool build/rollkin, tests) with -j2.
+# Run from anywhere:  bash scripts/setup.sh
+# Environment: ROLLKIN_BUILD_DIR (default build), ROLLKIN_JOBS (default 2), ROLLKIN_BUILD_TYPE (default
+# Release), ROLLKIN_SKIP_APT=1 to never call apt-get (e.g. on a non-Debian system with the libraries present).
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+build_dir=${ROLLKIN_BUILD_DIR:-build}
+jobs=${ROLLKIN_JOBS:-2}
+build_type=${ROLLKIN_BUILD_TYPE:-Release}
+
+log() { echo "[setup] $*" >&2; }
+
+# ---- 1. packages ---------------------------------------------------------------------------------------
+# Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
+# and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json.
+packages=(
+  g++ cmake make
+  libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
+)
+
+installed() { dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed'; }
+
+if [[ "${ROLLKIN_SKIP_APT:-0}" == 1 ]]; then
+  log "ROLLKIN_SKIP_APT=1: not checking packages"
+elif ! command -v dpkg >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+  log "no dpkg/apt-get (not Debian?): not installing packages, the build needs: ${packages[*]}"
+else
+  missing=()
+  for p in "${packages[@]}"; do
+    installed "$p" || missing+=("$p")
+  done
+  if [[ ${#missing[@]} -eq 0 ]]; then
+    log "all build packages are installed"
+  else
+    log "installing missing packages: ${missing[*]}"
+    if [[ $(id -u) -eq 0 ]]; then
+      as_root=(env DEBIAN_FRONTEND=noninteractive)
+    elif command -v sudo >/dev/null 2>&1; then
+      as_root=(sudo env DEBIAN_FRONTEND=noninteractive)
+    else
+      log "error: not root and sudo is not available; install as root: apt-get install ${missing[*]}"
+      exit 1
+    fi
+    "${as_root[@]}" apt-get update
+    "${as_root[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+    for p in "${missing[@]}"; do
+      installed "$p" || { log "error: package $p is still not installed"; exit 1; }
+    done
+  fi
+fi
+
+# ---- 2. configure --------------------------------------------------------------------------------------
+log "configuring $build_type build in $root/$build_dir"
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
+
+# ---- 3. build ------------------------------------------------------------------------------------------
+log "building with $jobs jobs"
+cmake --build "$build_dir" --parallel "$jobs"
+
+# Output directory of the README's example command (the writers do not create directories).
+mkdir -p "$root/out"
+log "done: $root/$build_dir"
