@@ -199,12 +199,11 @@ template <class S> class SampledProfile {
   // ---- fitting -----------------------------------------------------------------------------------------
   // Unknown moments: open splines M_1 .. M_{n-2} (node k+1 is unknown k), periodic M_0 .. M_{N-1}.
 
-  std::size_t span_length_count() const { return knots_.size() - 1; }
   S h(std::size_t k) const { return knots_[k + 1] - knots_[k]; }
-  std::size_t unknown_count() const { return closed_ ? span_length_count() : span_length_count() - 1; }
+  std::size_t unknown_count() const { return closed_ ? span_count() : span_count() - 1; }
   std::size_t node_of_unknown(std::size_t j) const { return closed_ ? j : j + 1; }
   /// Span lengths on both sides of node i, wrapping for periodic splines.
-  S h_before(std::size_t i) const { return h(i == 0 ? span_length_count() - 1 : i - 1); }
+  S h_before(std::size_t i) const { return h(i == 0 ? span_count() - 1 : i - 1); }
   S h_after(std::size_t i) const { return h(i); }
 
   /// Entry Q(k, i) of column i at row i + offset, offset in {-1, 0, 1}.
@@ -259,7 +258,7 @@ template <class S> class SampledProfile {
       return;
     }
     if (end == SplineEnd::Natural) return;
-    const std::size_t last = span_length_count() - 1;
+    const std::size_t last = span_count() - 1;
     const S r = col == m ? h(last) / h(last - 1) : h(0) / h(1);
     const std::size_t near = col == m ? m - 1 : 0, far = col == m ? m - 2 : 1;
     system.add(row, near, coeff * (S(1) + r));
@@ -327,7 +326,7 @@ template <class S> class SampledProfile {
   S smoothing_weight(const std::vector<Vec2<S>>& q, const SplineOptions<S>& o) {
     using std::sqrt;
     const S tol = o.smoothing_tolerance;
-    const S mean_h = knots_.back() / S(span_length_count());
+    const S mean_h = knots_.back() / S(span_count());
     S lo(0), hi = mean_h * mean_h * mean_h;
     bool hi_within = deviation_for(q, hi) <= tol;
     for (int k = 0; k < 60 && hi_within; ++k) {
