@@ -50,8 +50,9 @@ double brute_force_distance(const Points& a, const Points& b) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < a.size(); ++i)
     for (std::size_t j = 0; j + 1 < b.size(); ++j)
-      best = std::min({best, point_segment_distance(a[i], b[j], b[j + 1]), point_segment_distance(a[i + 1], b[j], b[j + 1]),
-                       point_segment_distance(b[j], a[i], a[i + 1]), point_segment_distance(b[j + 1], a[i], a[i + 1])});
+      best = std::min({best, point_segment_distance(a[i], b[j], b[j + 1]),
+                       point_segment_distance(a[i + 1], b[j], b[j + 1]), point_segment_distance(b[j], a[i], a[i + 1]),
+                       point_segment_distance(b[j + 1], a[i], a[i + 1])});
   return best;
 }
 

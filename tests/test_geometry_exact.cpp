@@ -42,7 +42,8 @@ BOOST_AUTO_TEST_CASE(naive_double_says_collinear_exact_says_clockwise) {
   BOOST_TEST(exact_orientation(q, p, r) == 1);
   // Half the exact cross product, i.e. the signed area of the triangle.
   BOOST_TEST(exact_signed_area({p, q, r}) ==
-             "-0.0000000000000000013877787807814453673807484831557889016685291864116290339037362855378887616097927093505859375");
+             "-0.0000000000000000013877787807814453673807484831557889016685291864116290339037362855378887616"
+             "097927093505859375");
 }
 
 // The converse: the naive test sees a turn where the doubles are exactly collinear.
@@ -87,8 +88,10 @@ BOOST_AUTO_TEST_CASE(squared_chords_and_areas) {
   const std::vector<P> pts{{0, 0}, {0.1, 0}, {0.1, 0.2}};
   const auto chords = exact_squared_chords(pts, false);
   BOOST_TEST_REQUIRE(chords.size() == 2u);
-  BOOST_TEST(chords[0] == "0.01000000000000000111022302462515657123851077828659396139564708135883709660962637144621112383902072906494140625");
-  BOOST_TEST(chords[1] == "0.040000000000000004440892098500626284954043113146375845582588325435348386438505485784844495356082916259765625");
+  BOOST_TEST(chords[0] == "0.010000000000000001110223024625156571238510778286593961395647081358837096609626371"
+                          "44621112383902072906494140625");  // 0.1^2 in doubles, exactly
+  BOOST_TEST(chords[1] == "0.040000000000000004440892098500626284954043113146375845582588325435348386438505485"
+                          "784844495356082916259765625");  // 0.2^2
   const auto closed = exact_squared_chords({{0, 0}, {3, 0}, {3, 4}}, true);
   BOOST_TEST_REQUIRE(closed.size() == 3u);
   BOOST_TEST(closed[0] == "9");

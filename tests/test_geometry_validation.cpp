@@ -180,6 +180,19 @@ BOOST_AUTO_TEST_CASE(too_few_and_non_finite_samples) {
   BOOST_TEST(only(r, IssueKind::NonFiniteSample).first == 1u);
 }
 
+BOOST_AUTO_TEST_CASE(issue_lists_are_capped_with_a_note) {
+  // A zig-zag between y = 0 and y = 1 followed by a straight line back along y = 1/2 crosses every tooth.
+  Points p;
+  for (int k = 0; k <= 20; ++k) p.emplace_back(k, k % 2);
+  p.emplace_back(20, 0.5);
+  p.emplace_back(-1, 0.5);
+  const auto r = validate_polyline(p, false, MaterialSide::Left, 1e-9, 3);
+  BOOST_TEST(r.self_intersections_found == 20u);
+  BOOST_TEST(count(r, IssueKind::SelfIntersection) == 3u);
+  BOOST_TEST_REQUIRE(r.notes.size() == 1u);
+  BOOST_TEST(r.notes.front() == "17 more self-intersections not listed (20 in total)");
+}
+
 BOOST_AUTO_TEST_CASE(crossings_agree_with_brute_force_on_random_polylines) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0, 1);

@@ -157,11 +157,13 @@ double max_abs_coordinate(const std::vector<Vec2<double>>& pts) {
 /// touch_tol (plus a few ulps so rounding never drops a pair) and b's boxes; each candidate measured with
 /// CGAL::squared_distance and tested with the exact predicate CGAL::do_intersect.
 std::vector<NearPair> near_pairs(const Polyline& a, const Polyline& b, double touch_tol) {
-  const double margin = touch_tol + 4 * epsilon<double>() * std::max(max_abs_coordinate(a.pts), max_abs_coordinate(b.pts));
+  const double scale = std::max(max_abs_coordinate(a.pts), max_abs_coordinate(b.pts));
+  const double margin = touch_tol + 4 * epsilon<double>() * scale;
   std::vector<SegmentBox> a_boxes, b_boxes;
   for (std::size_t i = 0; i < a.segments(); ++i) {
     const CGAL::Bbox_2 bb = a.segment(i).bbox();
-    a_boxes.emplace_back(CGAL::Bbox_2(bb.xmin() - margin, bb.ymin() - margin, bb.xmax() + margin, bb.ymax() + margin), i);
+    const CGAL::Bbox_2 grown(bb.xmin() - margin, bb.ymin() - margin, bb.xmax() + margin, bb.ymax() + margin);
+    a_boxes.emplace_back(grown, i);
   }
   for (std::size_t j = 0; j < b.segments(); ++j) b_boxes.emplace_back(b.segment(j).bbox(), j);
 

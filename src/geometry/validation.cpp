@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -46,12 +47,11 @@ double bounding_box_diagonal(const std::vector<Vec2<double>>& pts) {
 class IssueSink {
  public:
   IssueSink(ValidationReport& report, std::size_t cap) : report_(report), cap_(cap) {}
-  void add(const ValidationIssue& issue, IssueKind kind_for_count) {
-    std::size_t& n = counts_[static_cast<int>(kind_for_count)];
-    if (++n <= cap_) report_.issues.push_back(issue);
+  void add(const ValidationIssue& issue) {
+    if (++counts_[issue.kind] <= cap_) report_.issues.push_back(issue);
   }
   void note_overflow(IssueKind kind, const char* what) {
-    const std::size_t n = counts_[static_cast<int>(kind)];
+    const std::size_t n = counts_[kind];
     if (n > cap_) {
       report_.notes.push_back(std::to_string(n - cap_) + " more " + what + " not listed (" + std::to_string(n) +
                               " in total)");
@@ -61,7 +61,7 @@ class IssueSink {
  private:
   ValidationReport& report_;
   std::size_t cap_;
-  std::size_t counts_[16] = {};
+  std::map<IssueKind, std::size_t> counts_;
 };
 
 ValidationIssue make_issue(IssueKind kind, std::size_t first, std::size_t second, const Vec2<double>& point,
@@ -85,7 +85,7 @@ void check_coincident_samples(const std::vector<Vec2<double>>& pts, std::size_t 
     const std::size_t j = (i + 1) % n;
     const double d = (pts[j] - pts[i]).norm();
     if (coincide(d, tol))
-      sink.add(make_issue(IssueKind::CoincidentSamples, i, j, pts[i], d, tol), IssueKind::CoincidentSamples);
+      sink.add(make_issue(IssueKind::CoincidentSamples, i, j, pts[i], d, tol));
   }
   sink.note_overflow(IssueKind::CoincidentSamples, "coincident sample pairs");
 }
@@ -101,19 +101,22 @@ std::vector<std::size_t> proper_segments(const std::vector<Vec2<double>>& pts, s
 }
 
 /// A fold: the segments on either side of a sample overlap, i.e. the neighbours are collinear with it
-/// and on the same side (CGAL::collinear and CGAL::angle == ACUTE, both exact).
-void check_folds(const std::vector<Vec2<double>>& pts, std::size_t n, bool closed,
-                 const std::vector<std::size_t>& segs, IssueSink& sink) {
+/// and on the same side (CGAL::collinear and CGAL::angle == ACUTE, both exact). Returns the number found.
+std::size_t check_folds(const std::vector<Vec2<double>>& pts, std::size_t n, bool closed,
+                        const std::vector<std::size_t>& segs, IssueSink& sink) {
   const std::size_t m = segs.size();
+  std::size_t folds = 0;
   for (std::size_t k = 0; k < m; ++k) {
     if (!closed && k + 1 == m) break;
     const std::size_t in = segs[k], out = segs[(k + 1) % m];
     const std::size_t vertex = out;  // the sample where segment `out` starts
     const Point a = to_point(pts[in]), q = to_point(pts[vertex]), b = to_point(pts[(out + 1) % n]);
-    if (CGAL::collinear(a, q, b) && CGAL::angle(a, q, b) == CGAL::ACUTE)
-      sink.add(make_issue(IssueKind::FoldsBack, vertex, vertex, pts[vertex], 0, 0), IssueKind::FoldsBack);
+    if (!CGAL::collinear(a, q, b) || CGAL::angle(a, q, b) != CGAL::ACUTE) continue;
+    ++folds;
+    sink.add(make_issue(IssueKind::FoldsBack, vertex, vertex, pts[vertex], 0, 0));
   }
   sink.note_overflow(IssueKind::FoldsBack, "folds");
+  return folds;
 }
 
 /// Pairs (i, j), i < j, of non-adjacent proper segments that intersect. Candidates come from
@@ -154,8 +157,7 @@ std::size_t check_self_intersections(const std::vector<Vec2<double>>& pts, std::
   const auto pairs = crossing_pairs(pts, n, closed, segs);
   auto segment = [&](std::size_t i) { return Segment(to_point(pts[i]), to_point(pts[(i + 1) % n])); };
   for (const auto& [i, j] : pairs) {
-    sink.add(make_issue(IssueKind::SelfIntersection, i, j, common_point(segment(i), segment(j)), 0, 0),
-             IssueKind::SelfIntersection);
+    sink.add(make_issue(IssueKind::SelfIntersection, i, j, common_point(segment(i), segment(j)), 0, 0));
   }
   sink.note_overflow(IssueKind::SelfIntersection, "self-intersections");
   return pairs.size();
@@ -164,8 +166,7 @@ std::size_t check_self_intersections(const std::vector<Vec2<double>>& pts, std::
 void check_open_ends(const std::vector<Vec2<double>>& pts, std::size_t n, double tol, IssueSink& sink) {
   const double d = (pts[n - 1] - pts[0]).norm();
   if (n >= 3 && coincide(d, tol))
-    sink.add(make_issue(IssueKind::OpenEndsMeet, n - 1, 0, pts[0], d, tol, Severity::Warning),
-             IssueKind::OpenEndsMeet);
+    sink.add(make_issue(IssueKind::OpenEndsMeet, n - 1, 0, pts[0], d, tol, Severity::Warning));
 }
 
 void check_closing_segment(const std::vector<Vec2<double>>& pts, std::size_t n, IssueSink& sink) {
@@ -174,8 +175,7 @@ void check_closing_segment(const std::vector<Vec2<double>>& pts, std::size_t n, 
   const double closing = (pts[0] - pts[n - 1]).norm();
   if (longest > 0 && closing > kClosingSegmentRatio * longest)
     sink.add(make_issue(IssueKind::LongClosingSegment, n - 1, 0, pts[n - 1], closing / longest,
-                        kClosingSegmentRatio, Severity::Warning),
-             IssueKind::LongClosingSegment);
+                        kClosingSegmentRatio, Severity::Warning));
 }
 
 /// Shoelace formula about the first sample (less cancellation than about the origin).
@@ -204,8 +204,7 @@ void check_material_side(const std::vector<Vec2<double>>& pts, std::size_t n,
                          const std::vector<std::size_t>& segs, MaterialSide expected, IssueSink& sink) {
   const int wanted = expected == MaterialSide::Left ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
   if (simple_polygon_orientation(pts, n, segs) != wanted)
-    sink.add(make_issue(IssueKind::WrongMaterialSide, 0, n - 1, pts[0], signed_area(pts, n), 0),
-             IssueKind::WrongMaterialSide);
+    sink.add(make_issue(IssueKind::WrongMaterialSide, 0, n - 1, pts[0], signed_area(pts, n), 0));
 }
 
 /// Drops a last sample that repeats the first one of a closed contour (see the header's convention).
@@ -226,7 +225,7 @@ bool report_non_finite(const std::vector<Vec2<double>>& pts, IssueSink& sink) {
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (is_finite(pts[i])) continue;
     any = true;
-    sink.add(make_issue(IssueKind::NonFiniteSample, i, i, pts[i], 0, 0), IssueKind::NonFiniteSample);
+    sink.add(make_issue(IssueKind::NonFiniteSample, i, i, pts[i], 0, 0));
   }
   sink.note_overflow(IssueKind::NonFiniteSample, "non-finite samples");
   return any;
@@ -248,8 +247,7 @@ ValidationReport validate_polyline(const std::vector<Vec2<double>>& pts, bool cl
   report.sample_count = pts.size();
   IssueSink sink(report, max_reported_per_kind);
   if (pts.empty()) {
-    sink.add(make_issue(IssueKind::TooFewSamples, 0, 0, Vec2<double>::Zero(), 0, closed ? 3 : 2),
-             IssueKind::TooFewSamples);
+    sink.add(make_issue(IssueKind::TooFewSamples, 0, 0, Vec2<double>::Zero(), 0, closed ? 3 : 2));
     return report;
   }
   if (report_non_finite(pts, sink)) return report;
@@ -258,8 +256,7 @@ ValidationReport validate_polyline(const std::vector<Vec2<double>>& pts, bool cl
   const std::size_t n = closed ? samples_without_closing_repeat(pts, report.tolerance, report) : pts.size();
   report.sample_count = n;
   if (n < (closed ? 3u : 2u)) {
-    sink.add(make_issue(IssueKind::TooFewSamples, n, n, pts[0], double(n), closed ? 3 : 2),
-             IssueKind::TooFewSamples);
+    sink.add(make_issue(IssueKind::TooFewSamples, n, n, pts[0], double(n), closed ? 3 : 2));
     return report;
   }
 
@@ -269,13 +266,11 @@ ValidationReport validate_polyline(const std::vector<Vec2<double>>& pts, bool cl
 
   const auto segs = proper_segments(pts, n, closed);
   if (segs.size() < (closed ? 3u : 1u)) return report;  // everything collapsed onto one or two points
-  const std::size_t folds_before = report.issues.size();
-  check_folds(pts, n, closed, segs, sink);
-  const bool folds = report.issues.size() > folds_before;
+  const std::size_t folds = check_folds(pts, n, closed, segs, sink);
   report.self_intersections_found = check_self_intersections(pts, n, closed, segs, sink);
   if (!closed) return report;
   report.signed_area = signed_area(pts, n);
-  if (folds || report.self_intersections_found > 0)
+  if (folds > 0 || report.self_intersections_found > 0)
     report.notes.push_back("material side not checked: the contour is not simple");
   else
     check_material_side(pts, n, segs, expected, sink);
