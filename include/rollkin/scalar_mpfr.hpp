@@ -13,6 +13,9 @@
 // Checked with Eigen 3.4 (tests/test_scalar_mpfr.cpp): PartialPivLU, ColPivHouseholderQR,
 // CompleteOrthogonalDecomposition and JacobiSVD compile and solve to working precision.
 //
+// Include this header, not <boost/multiprecision/eigen.hpp> alone, wherever MPFR numbers meet Eigen, so that
+// every translation unit sees the same NumTraits (one definition rule).
+//
 // Linking: MPFR and GMP (the rollkin::rollkin target carries them in its link interface).
 #pragma once
 
