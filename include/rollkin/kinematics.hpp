@@ -1,0 +1,158 @@
+// Constraint equations of a mechanism and their derivatives (the "data" side: all buffers live in
+// KinematicsData, sized once, so evaluation does not allocate).
+//
+//   loop l:    T_l(q) = X_1 X_2 ... X_n = I, X_k = E_k or E_k^-1 (eq. 6); residual (T.x, T.y, angle T)
+//   rolling k: s_A(u_ref -> u) + s_B(v_ref -> v) = 0                               (eqs. 3-4)
+//
+// The Jacobian column of a variable of edge k is the rate of the residual under the spatial twist
+// Ad_{L_k} lambda, L_k = X_1 ... X_{k-1} (se2.hpp). For accelerations the bias
+// gamma = Jdot qdot is assembled from the twists' time derivatives:
+//   d/dt (Ad_{L_k} lambda) = Ad_{L_k} lambdadot + ad_{V_k} (Ad_{L_k} lambda),  V_k = sum_{i<k} twists qdot
+// and for a rolling row from sigma' udot^2 + sigma' vdot^2. At a closed loop (T = I, V = 0) the
+// acceleration residual is exactly Vdot, so J qddot + gamma = 0.
+#pragma once
+
+#include "rollkin/mechanism.hpp"
+
+#include <Eigen/Dense>
+
+namespace rollkin {
+
+template <class S> using VectorX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+template <class S> using MatrixX = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+
+template <class S> struct KinematicsData {
+  std::vector<PairState<S>> pairs;
+  std::vector<Twist<S>> spatial;   // per variable, current loop's spatial twist (scratch)
+  VectorX<S> residual;             // equation_count
+  MatrixX<S> jacobian;             // equation_count x variable_count
+  VectorX<S> bias;                 // gamma = Jdot qdot
+  VectorX<S> reference;            // q at assembly: the rolling pairs' arc-length origins
+
+  explicit KinematicsData(const Mechanism<S>& m)
+      : pairs(m.pairs.size()),
+        spatial(m.variable_count()),
+        residual(m.equation_count()),
+        jacobian(m.equation_count(), m.variable_count()),
+        bias(m.equation_count()),
+        reference(VectorX<S>::Zero(m.variable_count())) {}
+};
+
+/// Evaluates every pair at q (and qdot when order >= 3, for accelerations).
+template <class S> void evaluate_pairs(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>* qdot,
+                                       int order, KinematicsData<S>& d) {
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    const int i = m.pairs[k].first_variable;
+    d.pairs[k] = evaluate_pair(m.pairs[k], m.contours, q.data() + i, qdot ? qdot->data() + i : nullptr, order);
+  }
+}
+
+/// Transform of one loop step and the spatial twists of its variables in the step's left frame.
+/// Backwards: d(E^-1) E = -Ad_{E^-1} (dE E^-1).
+template <class S> SE2<S> loop_step(const PairState<S>& st, bool forward, std::array<Twist<S>, 2>& twist) {
+  if (forward) {
+    twist = st.twist;
+    return st.transform;
+  }
+  const SE2<S> inv = st.transform.inverse();
+  twist = {-inv.adjoint(st.twist[0]), -inv.adjoint(st.twist[1])};
+  return inv;
+}
+
+/// Residual and Jacobian at the pair states in d (evaluate_pairs first).
+template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX<S>& q, KinematicsData<S>& d) {
+  d.jacobian.setZero();
+  int row = 0;
+  for (const auto& loop : m.loops) {
+    SE2<S> left;  // L_k
+    std::array<Twist<S>, 2> tw;
+    for (const LoopEdge& e : loop) {
+      const Pair<S>& p = m.pairs[e.pair];
+      const SE2<S> step = loop_step(d.pairs[e.pair], e.forward, tw);
+      for (int j = 0; j < p.variable_count(); ++j) d.spatial[p.first_variable + j] = left.adjoint(tw[j]);
+      left = left * step;
+    }
+    d.residual.template segment<3>(row) = Vec3<S>(left.translation().x(), left.translation().y(), left.angle());
+    for (const LoopEdge& e : loop) {
+      const Pair<S>& p = m.pairs[e.pair];
+      for (int j = 0; j < p.variable_count(); ++j) {
+        const int v = p.first_variable + j;
+        d.jacobian.template block<3, 1>(row, v) += residual_rate(left, d.spatial[v]);
+      }
+    }
+    row += 3;
+  }
+  for (int k : m.rolling_pairs) {
+    const Pair<S>& p = m.pairs[k];
+    const int i = p.first_variable;
+    const PairState<S>& st = d.pairs[k];
+    d.residual(row) = m.contours[p.contour_a].arc_length(d.reference(i), q(i)) +
+                      m.contours[p.contour_b].arc_length(d.reference(i + 1), q(i + 1));
+    d.jacobian(row, i) = st.contact[0].speed;
+    d.jacobian(row, i + 1) = st.contact[1].speed;
+    ++row;
+  }
+}
+
+/// gamma = Jdot qdot at a closed pose (pairs evaluated with order 3 and this qdot).
+template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qdot, KinematicsData<S>& d) {
+  int row = 0;
+  for (const auto& loop : m.loops) {
+    SE2<S> left;
+    Twist<S> velocity = Twist<S>::Zero();  // V_k, spatial velocity of L_k
+    Twist<S> gamma = Twist<S>::Zero();
+    std::array<Twist<S>, 2> tw;
+    for (const LoopEdge& e : loop) {
+      const Pair<S>& p = m.pairs[e.pair];
+      const PairState<S>& st = d.pairs[e.pair];
+      const SE2<S> step = loop_step(st, e.forward, tw);
+      // Rates of the step's own twists (in its left frame).
+      std::array<Twist<S>, 2> tw_rate = st.twist_rate;
+      if (!e.forward) {
+        // lambda' = -Ad_{E^-1} mu:  lambda'dot = -Ad_{E^-1} mudot + ad_W lambda',  W = sum lambda' qdot
+        Twist<S> w = Twist<S>::Zero();
+        for (int j = 0; j < p.variable_count(); ++j) w += tw[j] * qdot(p.first_variable + j);
+        const SE2<S> inv = st.transform.inverse();
+        for (int j = 0; j < 2; ++j) tw_rate[j] = -inv.adjoint(st.twist_rate[j]) + lie_bracket<S>(w, tw[j]);
+      }
+      Twist<S> step_velocity = Twist<S>::Zero();
+      for (int j = 0; j < p.variable_count(); ++j) {
+        const S& qd = qdot(p.first_variable + j);
+        const Twist<S> c = left.adjoint(tw[j]);
+        gamma += (left.adjoint(tw_rate[j]) + lie_bracket<S>(velocity, c)) * qd;
+        step_velocity += c * qd;
+      }
+      velocity += step_velocity;
+      left = left * step;
+    }
+    d.bias.template segment<3>(row) = gamma;
+    row += 3;
+  }
+  for (int k : m.rolling_pairs) {
+    const Pair<S>& p = m.pairs[k];
+    const int i = p.first_variable;
+    const PairState<S>& st = d.pairs[k];
+    d.bias(row) = st.contact[0].speed_rate * qdot(i) * qdot(i) + st.contact[1].speed_rate * qdot(i + 1) * qdot(i + 1);
+    ++row;
+  }
+}
+
+/// World pose of every link, from the spanning tree (pairs evaluated at q).
+template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
+  std::vector<SE2<S>> pose(m.links.size());
+  std::vector<bool> done(m.links.size(), false);
+  done[m.ground] = true;
+  // Links are reached in BFS order through tree[]; resolve lazily.
+  for (std::size_t pass = 0; pass < m.links.size(); ++pass) {
+    for (std::size_t i = 0; i < m.links.size(); ++i) {
+      if (done[i] || !done[m.tree[i].parent]) continue;
+      const LoopEdge e = m.tree[i].edge;
+      const SE2<S>& E = d.pairs[e.pair].transform;
+      pose[i] = pose[m.tree[i].parent] * (e.forward ? E : E.inverse());
+      done[i] = true;
+    }
+  }
+  return pose;
+}
+
+}  // namespace rollkin

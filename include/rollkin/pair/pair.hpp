@@ -1,0 +1,118 @@
+// Pair matrices and their derivatives (method.md sections 1-3). The closed set of pair types:
+//   revolute   P(theta) = Rot(theta)                                       1 variable
+//   prismatic  P(s)     = Trans(s, 0)   (slides along the joint frame's x)  1 variable
+//   cam        P(u, v)  = T_A(u) Rot(pi) T_B(v)^-1   point contact, slip     2 variables   (eq. 1)
+//   rolling    the cam pair plus  s_A(u0 -> u) + s_B(v0 -> v) = 0           2 variables   (eqs. 3-4)
+// T_A(u) is the contact frame of contour A in link A's frame: x along the unit tangent, origin at p(u).
+// Rot(pi) makes the tangents anti-parallel and the outward normals opposite, so the bodies lie on opposite
+// sides of the common tangent; with both contours traversed material-on-left this holds for external and
+// internal contact alike.
+//
+// Derivatives are spatial twists lambda_j = (dP/dq_j) P^-1 expressed in the pair's left frame:
+//   revolute lambda = (0, 0, 1); prismatic lambda = (1, 0, 0);
+//   contact  lambda_u = Ad_{T_A} (sigma_A, 0, kappa_A sigma_A)
+//            lambda_v = Ad_{T_A} (sigma_B, 0, -kappa_B sigma_B)
+// so that at a rolling contact (sigma_A du = -sigma_B dv) the relative motion is a pure rotation about the
+// contact point at rate (kappa_A + kappa_B) ds (method.md section 5, rate relation).
+#pragma once
+
+#include "rollkin/profile/profile.hpp"
+
+#include <array>
+#include <string>
+
+namespace rollkin {
+
+enum class PairKind { Revolute, Prismatic, Cam, Rolling };
+
+inline const char* to_string(PairKind k) {
+  switch (k) {
+    case PairKind::Revolute: return "revolute";
+    case PairKind::Prismatic: return "prismatic";
+    case PairKind::Cam: return "cam";
+    case PairKind::Rolling: return "rolling";
+  }
+  return "?";
+}
+inline bool is_contact(PairKind k) { return k == PairKind::Cam || k == PairKind::Rolling; }
+inline int variable_count(PairKind k) { return is_contact(k) ? 2 : 1; }
+
+/// Description of one pair: which links it joins, where, and its variables' names.
+template <class S> struct Pair {
+  std::string name;
+  PairKind kind = PairKind::Revolute;
+  int link_a = -1, link_b = -1;
+  SE2<S> frame_a, frame_b;             // joint frames in link A and link B (revolute, prismatic)
+  int contour_a = -1, contour_b = -1;  // contours on link A and link B (cam, rolling)
+  std::array<std::string, 2> variables;
+  int first_variable = 0;              // index of the pair's first variable in the mechanism's q
+
+  int variable_count() const { return rollkin::variable_count(kind); }
+  template <class T> Pair<T> cast() const {
+    Pair<T> p;
+    p.name = name;
+    p.kind = kind;
+    p.link_a = link_a;
+    p.link_b = link_b;
+    p.frame_a = frame_a.template cast<T>();
+    p.frame_b = frame_b.template cast<T>();
+    p.contour_a = contour_a;
+    p.contour_b = contour_b;
+    p.variables = variables;
+    p.first_variable = first_variable;
+    return p;
+  }
+};
+
+/// A pair evaluated at its variables: the edge transform E = F_A P F_B^-1 from link A's frame to link B's
+/// frame, its spatial twists per variable in link A's frame, and (when rates are given) their time
+/// derivatives, used for the acceleration terms.
+template <class S> struct PairState {
+  SE2<S> transform;
+  std::array<Twist<S>, 2> twist;
+  std::array<Twist<S>, 2> twist_rate;
+  // Contact geometry, filled for cam and rolling pairs.
+  std::array<ContourPoint<S>, 2> contact;
+};
+
+/// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
+template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,
+                                             const S* q, const S* qdot, int order) {
+  PairState<S> st;
+  const Twist<S> zero = Twist<S>::Zero();
+  st.twist_rate = {zero, zero};
+  switch (pair.kind) {
+    case PairKind::Revolute:
+      st.transform = pair.frame_a * SE2<S>::rotation(q[0]) * pair.frame_b.inverse();
+      st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(0), S(0), S(1)));
+      st.twist[1] = zero;
+      return st;
+    case PairKind::Prismatic:
+      st.transform = pair.frame_a * SE2<S>::translation(Vec2<S>(q[0], S(0))) * pair.frame_b.inverse();
+      st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(1), S(0), S(0)));
+      st.twist[1] = zero;
+      return st;
+    case PairKind::Cam:
+    case PairKind::Rolling: break;
+  }
+  // Contours carry their placement: T_A, T_B are already in the link frames (F_A = F_B = I).
+  const int geo = order >= 2 ? order : 2;  // curvature is needed for the twists themselves
+  const ContourPoint<S> a = contour_point(contours[pair.contour_a].jet(q[0], geo), geo);
+  const ContourPoint<S> b = contour_point(contours[pair.contour_b].jet(q[1], geo), geo);
+  const SE2<S> ta = SE2<S>::from_axis(a.tangent.x(), a.tangent.y(), a.p);
+  const SE2<S> tb = SE2<S>::from_axis(b.tangent.x(), b.tangent.y(), b.p);
+  const SE2<S> flip = SE2<S>::from_axis(S(-1), S(0), Vec2<S>(S(0), S(0)));  // Rot(pi), exact
+  st.transform = ta * flip * tb.inverse();                                    // eq. (1)
+  st.twist[0] = ta.adjoint(Twist<S>(a.speed, S(0), a.turn_rate));
+  st.twist[1] = ta.adjoint(Twist<S>(b.speed, S(0), -b.turn_rate));
+  st.contact = {a, b};
+  if (qdot != nullptr && order >= 3) {
+    // d/dt Ad_{T_A} x = Ad_{T_A} xdot + ad_{lambda_u udot} Ad_{T_A} x   (T_A moves with u only)
+    st.twist_rate[0] = ta.adjoint(Twist<S>(a.speed_rate, S(0), a.turn_accel)) * qdot[0];
+    st.twist_rate[1] = lie_bracket<S>(st.twist[0] * qdot[0], st.twist[1]) +
+                       ta.adjoint(Twist<S>(b.speed_rate, S(0), -b.turn_accel)) * qdot[1];
+  }
+  return st;
+}
+
+}  // namespace rollkin

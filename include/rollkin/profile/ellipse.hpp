@@ -1,0 +1,65 @@
+// Ellipse p(t) = (A cos t, B sin t) about the contour frame's origin (t the eccentric anomaly),
+// counter-clockwise with the material inside. Its foci lie at (+-c, 0), c = sqrt(A^2 - B^2) when A >= B.
+// Arc length through the incomplete elliptic integral of the second kind E(phi, k) (Boost.Math, any S):
+//   A >= B: |p'| = A sqrt(1 - e^2 cos^2 t), s(t) = A [E(t - pi/2, e) + E(pi/2, e)],  e^2 = 1 - B^2/A^2
+//   A <  B: |p'| = B sqrt(1 - e^2 sin^2 t), s(t) = B E(t, e),                        e^2 = 1 - A^2/B^2
+#pragma once
+
+#include "rollkin/profile/arc_length.hpp"
+
+#include <boost/math/special_functions/ellint_2.hpp>
+
+#include <stdexcept>
+
+namespace rollkin {
+
+template <class S> class Ellipse {
+ public:
+  using Scalar = S;
+  Ellipse(const S& semi_x, const S& semi_y, ArcLengthMethod method = {})
+      : a_(semi_x), b_(semi_y), domain_{S(0), S(2) * pi<S>(), true}, method_(method) {
+    if (!(semi_x > S(0)) || !(semi_y > S(0))) throw std::invalid_argument("ellipse: semi-axes must be positive");
+  }
+
+  const S& semi_x() const { return a_; }
+  const S& semi_y() const { return b_; }
+  Domain<S> domain() const { return domain_; }
+  ParamKind parameter_kind() const { return ParamKind::Angle; }
+  int continuity() const { return 3; }
+  Jet<S> jet(const S& t, int order) const {
+    using std::cos;
+    using std::sin;
+    const S c = cos(t), s = sin(t);
+    Jet<S> j;
+    j.p = Vec2<S>(a_ * c, b_ * s);
+    j.d1 = Vec2<S>(-a_ * s, b_ * c);
+    if (order >= 2) j.d2 = Vec2<S>(-a_ * c, -b_ * s);
+    if (order >= 3) j.d3 = Vec2<S>(a_ * s, -b_ * c);
+    return j;
+  }
+  S arc_length(const S& t0, const S& t1) const {
+    if (method_.closed_form) return primitive(t1) - primitive(t0);
+    return arc_length_by_quadrature(*this, t0, t1, method_.rule);
+  }
+  S param_at_arc_length(const S& t0, const S& ds) const { return param_at_arc_length_newton(*this, t0, ds); }
+
+  template <class T> Ellipse<T> cast() const { return Ellipse<T>(scalar_cast<T>(a_), scalar_cast<T>(b_), method_); }
+
+ private:
+  S primitive(const S& t) const {
+    using boost::math::ellint_2;
+    using std::sqrt;
+    if (a_ >= b_) {
+      const S e = sqrt(S(1) - (b_ / a_) * (b_ / a_));
+      return a_ * (ellint_2(e, t - pi<S>() / S(2)) + ellint_2(e, pi<S>() / S(2)));
+    }
+    const S e = sqrt(S(1) - (a_ / b_) * (a_ / b_));
+    return b_ * ellint_2(e, t);
+  }
+
+  S a_, b_;
+  Domain<S> domain_;
+  ArcLengthMethod method_;
+};
+
+}  // namespace rollkin

@@ -1,0 +1,84 @@
+// A contour as the mechanism sees it: one profile from the closed set of profile types, placed in its
+// link's frame, with the material side applied. Dispatch over the closed set is static (std::visit).
+//
+// Material side: every profile type defines a natural direction (see its header); when the scene says the
+// material lies on the other side, the contour runs the profile backwards, u -> -u, so that the material is
+// on the left again (method.md section 3). Derivatives of odd order change sign under that reversal.
+#pragma once
+
+#include "rollkin/profile/bezier.hpp"
+#include "rollkin/profile/circle.hpp"
+#include "rollkin/profile/ellipse.hpp"
+#include "rollkin/profile/line.hpp"
+#include "rollkin/profile/parabola.hpp"
+#include "rollkin/profile/spline.hpp"
+#include "rollkin/se2.hpp"
+
+#include <string>
+#include <variant>
+
+namespace rollkin {
+
+/// The closed set of profile types: analytic curves, sampled contours (spline), Bezier paths.
+template <class S>
+using ProfileShape = std::variant<Line<S>, Circle<S>, Parabola<S>, Ellipse<S>, SampledProfile<S>, BezierPath<S>>;
+
+template <class S> class Contour {
+ public:
+  using Scalar = S;
+  Contour(std::string name, int link, ProfileShape<S> shape, SE2<S> placement, bool reversed)
+      : name_(std::move(name)), link_(link), shape_(std::move(shape)), placement_(placement), reversed_(reversed) {}
+
+  const std::string& name() const { return name_; }
+  int link() const { return link_; }
+  const SE2<S>& placement() const { return placement_; }
+  bool reversed() const { return reversed_; }
+  const ProfileShape<S>& shape() const { return shape_; }
+
+  Domain<S> domain() const {
+    const Domain<S> d = visit([](const auto& p) { return p.domain(); });
+    if (!reversed_) return d;
+    return Domain<S>{-d.hi, -d.lo, d.closed};
+  }
+  ParamKind parameter_kind() const { return visit([](const auto& p) { return p.parameter_kind(); }); }
+  int continuity() const { return visit([](const auto& p) { return p.continuity(); }); }
+
+  /// Jet in the LINK frame, material on the left.
+  Jet<S> jet(const S& u, int order) const {
+    Jet<S> j = visit([&](const auto& p) { return p.jet(reversed_ ? S(-u) : u, order); });
+    if (reversed_) {
+      j.d1 = -j.d1;
+      j.d3 = -j.d3;
+    }
+    j.p = placement_.act(j.p);
+    j.d1 = placement_.rotate(j.d1);
+    j.d2 = placement_.rotate(j.d2);
+    j.d3 = placement_.rotate(j.d3);
+    return j;
+  }
+  /// Signed arc length from u0 to u1 in this contour's (possibly reversed) parameter.
+  S arc_length(const S& u0, const S& u1) const {
+    if (!reversed_) return visit([&](const auto& p) { return p.arc_length(u0, u1); });
+    return -visit([&](const auto& p) { return p.arc_length(S(-u0), S(-u1)); });
+  }
+  S param_at_arc_length(const S& u0, const S& ds) const {
+    if (!reversed_) return visit([&](const auto& p) { return p.param_at_arc_length(u0, ds); });
+    return -visit([&](const auto& p) { return p.param_at_arc_length(S(-u0), S(-ds)); });
+  }
+
+  template <class T> Contour<T> cast() const {
+    ProfileShape<T> shape = std::visit([](const auto& p) -> ProfileShape<T> { return p.template cast<T>(); }, shape_);
+    return Contour<T>(name_, link_, std::move(shape), placement_.template cast<T>(), reversed_);
+  }
+
+ private:
+  template <class F> auto visit(F&& f) const { return std::visit(std::forward<F>(f), shape_); }
+
+  std::string name_;
+  int link_;
+  ProfileShape<S> shape_;
+  SE2<S> placement_;
+  bool reversed_;
+};
+
+}  // namespace rollkin

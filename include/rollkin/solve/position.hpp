@@ -1,0 +1,178 @@
+// Position, velocity and acceleration analysis at one input value.
+//
+// Newton-Raphson on the constraints (eqs. 6 and 3) in the unknowns (all pair variables but the drivers),
+// with the analytic Jacobian of kinematics.hpp. Rows and columns are scaled (lengths by the mechanism's
+// length scale) and every step is the minimum-norm least-squares solution from a rank-revealing complete
+// orthogonal decomposition, so redundant but consistent constraints (more equations than rank) converge
+// quadratically and inconsistent ones are reported as CannotAssemble.
+#pragma once
+
+#include "rollkin/kinematics.hpp"
+#include "rollkin/solve/report.hpp"
+
+#include <Eigen/QR>
+
+namespace rollkin {
+
+template <class S> struct NewtonSettings {
+  int max_iterations = 30;
+  /// Converged when the scaled residual is below residual_tolerance...
+  S residual_tolerance = epsilon<S>() * S(64);
+  /// ...or when a step is below step_tolerance and the residual below consistency_tolerance (round-off).
+  S step_tolerance = tolerance<S>(S(3) / S(4));
+  /// Least-squares residual above this at convergence means inconsistent constraints.
+  S consistency_tolerance = tolerance<S>(S(1) / S(2));
+};
+
+/// Solve workspace: buffers sized once per mechanism; a solve does not allocate per Newton step.
+template <class S> struct SolveData {
+  KinematicsData<S> kin;
+  VectorX<S> row_scale, col_scale;       // residual and variable scales
+  MatrixX<S> ju;                         // scaled Jacobian of the unknowns
+  VectorX<S> rhs, step;                  // scaled
+  Eigen::CompleteOrthogonalDecomposition<MatrixX<S>> cod;
+  NewtonSettings<S> settings;
+
+  explicit SolveData(const Mechanism<S>& m)
+      : kin(m),
+        row_scale(m.equation_count()),
+        col_scale(m.unknowns.size()),
+        ju(m.equation_count(), m.unknowns.size()),
+        rhs(m.equation_count()),
+        step(m.unknowns.size()),
+        cod(m.equation_count(), m.unknowns.size()) {
+    int row = 0;
+    for (std::size_t l = 0; l < m.loops.size(); ++l, row += 3) {
+      row_scale(row) = m.length_scale;
+      row_scale(row + 1) = m.length_scale;
+      row_scale(row + 2) = S(1);
+    }
+    for (; row < m.equation_count(); ++row) row_scale(row) = m.length_scale;
+    for (std::size_t c = 0; c < m.unknowns.size(); ++c) col_scale(c) = m.variable_scale(m.unknowns[c]);
+  }
+};
+
+/// Max-norm of a vector whose entries are divided by scale.
+template <class S, class A, class B> S scaled_max_norm(const A& v, const B& scale) {
+  using std::abs;
+  using std::max;
+  S n(0);
+  for (Eigen::Index i = 0; i < v.size(); ++i) n = max(n, S(abs(v(i)) / scale(i)));
+  return n;
+}
+
+/// Evaluates the constraints at q and factors the scaled Jacobian of the unknowns (first `rows` rows).
+template <class S> void evaluate_and_factor(const Mechanism<S>& m, const VectorX<S>& q, SolveData<S>& sd, int rows) {
+  evaluate_pairs<S>(m, q, nullptr, 2, sd.kin);
+  compute_constraints(m, q, sd.kin);
+  const auto n = static_cast<Eigen::Index>(m.unknowns.size());
+  for (Eigen::Index c = 0; c < n; ++c)
+    sd.ju.col(c) = sd.kin.jacobian.col(m.unknowns[c]).cwiseQuotient(sd.row_scale) * sd.col_scale(c);
+  if (rows == m.equation_count()) sd.cod.compute(sd.ju);
+  else sd.cod.compute(sd.ju.topRows(rows));
+}
+
+/// Condition estimate from the triangular factor: |r_11| / |r_kk| over the numerical rank k.
+template <class S> S condition_estimate(const SolveData<S>& sd) {
+  using std::abs;
+  const Eigen::Index k = sd.cod.rank();
+  if (k == 0) return std::numeric_limits<S>::infinity();
+  const auto& r = sd.cod.matrixQTZ();
+  const S smallest = abs(r(k - 1, k - 1));
+  const S full = sd.cod.cols() > k ? std::numeric_limits<S>::infinity() : abs(r(0, 0)) / smallest;
+  return full;
+}
+
+/// Newton-Raphson at fixed driver values (taken from q). Uses the first `rows` equations (all by default).
+/// On return q holds the last iterate and sd is evaluated and factored there.
+template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd, int rows = -1) {
+  if (rows < 0) rows = m.equation_count();
+  const NewtonSettings<S>& cfg = sd.settings;
+  SolveReport<S> rep;
+  rep.equations = rows;
+  rep.unknowns = static_cast<int>(m.unknowns.size());
+  S last_step = std::numeric_limits<S>::infinity();
+  for (int it = 0;; ++it) {
+    evaluate_and_factor(m, q, sd, rows);
+    rep.iterations = it;
+    rep.residual = scaled_max_norm<S>(sd.kin.residual.head(rows), sd.row_scale.head(rows));
+    rep.rank = static_cast<int>(sd.cod.rank());
+    rep.condition = condition_estimate(sd);
+    const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
+    if (rep.residual <= cfg.residual_tolerance || settled) {
+      rep.status = rep.rank < rep.unknowns ? SolveStatus::Underdetermined : SolveStatus::Converged;
+      return rep;
+    }
+    if (it == cfg.max_iterations) break;
+    sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseQuotient(sd.row_scale.head(rows));
+    sd.step = sd.cod.solve(sd.rhs.head(rows));
+    using std::abs;
+    last_step = sd.step.cwiseAbs().maxCoeff();
+    if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
+    for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += sd.step(c) * sd.col_scale(c);
+    if (last_step <= epsilon<S>() * S(16) && rep.residual > cfg.consistency_tolerance) {
+      rep.status = SolveStatus::CannotAssemble;  // least-squares stationary with a residual left
+      rep.detail = "the constraints cannot all be met: least-squares residual stays above tolerance";
+      return rep;
+    }
+  }
+  rep.status = rep.residual > cfg.consistency_tolerance && last_step <= cfg.step_tolerance ? SolveStatus::CannotAssemble
+                                                                                         : SolveStatus::NoConvergence;
+  rep.detail = rep.status == SolveStatus::CannotAssemble
+                   ? "the constraints cannot all be met: least-squares residual stays above tolerance"
+                   : "Newton-Raphson did not converge";
+  return rep;
+}
+
+/// Rates of all variables per unit rate of the drivers: J_u qdot_u = -J_d qdot_d (sd factored at the pose).
+template <class S> VectorX<S> solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& driver_rates) {
+  VectorX<S> qdot = VectorX<S>::Zero(m.variable_count());
+  for (std::size_t k = 0; k < m.drivers.size(); ++k) qdot(m.drivers[k]) = driver_rates(k);
+  sd.rhs = -(sd.kin.jacobian * qdot).cwiseQuotient(sd.row_scale);
+  sd.step = sd.cod.solve(sd.rhs);
+  for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
+  return qdot;
+}
+
+/// Second derivatives: J_u qddot_u = -J_d qddot_d - gamma(q, qdot). Needs C2 contours (continuity >= 2).
+template <class S> VectorX<S> solve_acceleration(const Mechanism<S>& m, const VectorX<S>& q, SolveData<S>& sd,
+                                                 const VectorX<S>& qdot, const VectorX<S>& driver_accels) {
+  VectorX<S> qdd = VectorX<S>::Zero(m.variable_count());
+  for (std::size_t k = 0; k < m.drivers.size(); ++k) qdd(m.drivers[k]) = driver_accels(k);
+  evaluate_pairs(m, q, &qdot, 3, sd.kin);
+  compute_bias(m, qdot, sd.kin);
+  sd.rhs = -(sd.kin.jacobian * qdd + sd.kin.bias).cwiseQuotient(sd.row_scale);
+  sd.step = sd.cod.solve(sd.rhs);
+  for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdd(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
+  return qdd;
+}
+
+/// Assembly: closes the loops (rolling rows left out) with minimum-norm corrections from the guess in q,
+/// keeping the drivers and the `held` variables at their given values; then makes the assembled contact
+/// parameters the rolling pairs' arc-length origins (eq. 3: D_i = D_i-1 counted from the assembly pose) and
+/// solves the full system there, which reports its rank, redundancy and mobility.
+template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd,
+                                           const std::vector<int>& held = {}) {
+  SolveReport<S> rep;
+  if (!m.loops.empty()) {
+    Mechanism<S> closing = m;
+    closing.drivers.insert(closing.drivers.end(), held.begin(), held.end());
+    closing.finalize();
+    SolveData<S> closing_data(closing);
+    closing_data.settings = sd.settings;
+    rep = solve_position(closing, q, closing_data, 3 * static_cast<int>(m.loops.size()));
+    if (rep.status == SolveStatus::NoConvergence || rep.status == SolveStatus::CannotAssemble) {
+      rep.status = SolveStatus::CannotAssemble;
+      rep.detail = "the loops cannot be closed from the given assembly pose (" + rep.detail + ")";
+      return rep;
+    }
+  }
+  sd.kin.reference = q;
+  rep = solve_position(m, q, sd);
+  if (rep.status == SolveStatus::Underdetermined)
+    rep.detail = "the drivers do not fix the pose: the mechanism has " +
+                 std::to_string(rep.unknowns - rep.rank) + " more degree(s) of freedom than inputs";
+  return rep;
+}
+
+}  // namespace rollkin

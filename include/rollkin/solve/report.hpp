@@ -1,0 +1,50 @@
+// What a solve tells its caller. A solve never throws or prints for a numerical outcome; it returns one of
+// these and the caller (CLI, tests) decides what to say.
+#pragma once
+
+#include <string>
+
+namespace rollkin {
+
+enum class SolveStatus {
+  Converged,        // pose found
+  DeadPoint,        // motion limit: the Jacobian of the unknowns turns singular, the input cannot go on
+  DomainExit,       // a contact parameter leaves its open contour's domain
+  NoConvergence,    // Newton did not converge (not identified as a limit)
+  CannotAssemble,   // inconsistent constraints: least-squares residual stays above tolerance
+  Underdetermined,  // more degrees of freedom than drivers: the pose is not fixed by the inputs
+  NotReached        // a requested input beyond a limit met earlier in the sweep
+};
+
+inline const char* to_string(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::Converged: return "ok";
+    case SolveStatus::DeadPoint: return "dead_point";
+    case SolveStatus::DomainExit: return "domain_exit";
+    case SolveStatus::NoConvergence: return "no_convergence";
+    case SolveStatus::CannotAssemble: return "cannot_assemble";
+    case SolveStatus::Underdetermined: return "underdetermined";
+    case SolveStatus::NotReached: return "not_reached";
+  }
+  return "?";
+}
+
+template <class S> struct SolveReport {
+  SolveStatus status = SolveStatus::NoConvergence;
+  int iterations = 0;
+  S residual = S(0);        // max-norm of the scaled residual at the returned pose
+  S condition = S(0);       // condition estimate of the scaled Jacobian of the unknowns
+  int rank = 0;             // numerical rank of the unknowns' Jacobian
+  int equations = 0;        // number of constraint equations
+  int unknowns = 0;
+  // Where a limit lies (DeadPoint, DomainExit): the input value, and for DomainExit the pair and contour.
+  S limit_input = S(0);
+  int pair = -1;
+  int contour = -1;
+  std::string detail;       // one human-readable sentence
+
+  bool ok() const { return status == SolveStatus::Converged; }
+  int redundant() const { return equations - rank; }
+};
+
+}  // namespace rollkin
