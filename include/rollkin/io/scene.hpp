@@ -1,0 +1,68 @@
+// Scene files: a mechanism described in JSON (format in docs/scene_format.md), read into a finalized
+// Mechanism<double> with its assembly guess, the variables held during assembly and an optional sweep.
+//
+//   rollkin::io::Scene scene = rollkin::io::load_scene("examples/paper_fourbar.json");
+//   rollkin::SolveData<double> sd(scene.mechanism);
+//   rollkin::VectorX<double> q = scene.guess;
+//   auto assembly = rollkin::assemble(scene.mechanism, q, sd, scene.held);
+//   auto result = rollkin::sweep(scene.mechanism, sd, q, assembly, scene.sweep->driver,
+//                                rollkin::io::sweep_inputs(*scene.sweep));
+//
+// Every problem with the file is an InputError naming the scene file, the JSON path of the offending value
+// (e.g. "pairs[2].contours[1]") and what was expected. Internally angles are radians; the file's angle unit
+// ("deg" by default, or "rad") applies to every angle in the file, and Scene converts back and forth.
+#pragma once
+
+#include "rollkin/io/input_error.hpp"
+#include "rollkin/kinematics.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollkin::io {
+
+/// A sweep of one driver: from, to and step in the FILE's units (degrees or radians for an angle input,
+/// scene length units for a length input); `unit` converts them to internal units (pi/180 for degrees).
+struct Sweep {
+  std::string input;   // full variable name, e.g. "O_A.theta2"
+  int driver = 0;      // index into mechanism.drivers
+  int variable = 0;    // index into q
+  double from = 0, to = 0, step = 1;
+  double unit = 1;     // internal value = file value * unit
+};
+
+struct Scene {
+  Mechanism<double> mechanism;       // finalized, drivers set from "inputs"
+  VectorX<double> guess;             // assembly guess (internal units), one entry per variable
+  std::vector<int> held;             // variables held at their given value during assembly
+  std::optional<Sweep> sweep;        // the scene's "sweep", if any
+  std::string file;                  // the scene file's path as given
+  std::string length_unit = "m";     // label only
+  bool degrees = true;               // the file's angle unit
+  std::vector<std::string> inputs;   // full names of the drivers, in "inputs" order
+  std::vector<std::string> files_read;  // every contour file read (point files, SVG), as opened
+
+  /// Internal units per file unit of variable i: pi/180 for angles in a "deg" file, else 1.
+  double unit_of(int variable) const;
+  /// Short unit label of variable i in the file's units: "deg", "rad", the length unit, or "".
+  std::string unit_label(int variable) const;
+};
+
+/// Reads and checks a scene file. Throws InputError (file, JSON path, message) for every problem.
+Scene load_scene(const std::string& path);
+
+/// Builds a scene from JSON text; `file` names the source in messages and anchors relative contour paths
+/// (they are resolved against its directory).
+Scene parse_scene(const std::string& text, const std::string& file);
+
+/// The requested input values, in INTERNAL units: from, from + step, ... up to `to`, inclusive of `to` when
+/// it falls on the grid within 1e-9 of a step. Throws std::invalid_argument for a zero step, a step of the
+/// wrong sign or more than 10 million values.
+std::vector<double> sweep_inputs(const Sweep& sweep);
+
+/// Checks a sweep's numbers (step non-zero, with the sign of to - from, finite, not too many values);
+/// returns an empty string when fine, else what is wrong.
+std::string check_sweep(const Sweep& sweep);
+
+}  // namespace rollkin::io

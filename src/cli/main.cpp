@@ -1,0 +1,288 @@
+// build/rollkin: the command-line tool.
+//
+//   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
+//                       [--rates] [--verbose]
+//   rollkin --help | --version
+//
+// Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed): one line
+// per limit on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
+// an output that would overwrite an input, an output that cannot be written): the message on stderr and no
+// output file written.
+#include "output.hpp"
+
+#include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifndef ROLLKIN_VERSION
+#define ROLLKIN_VERSION "0.1.0"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rollkin;
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  std::string scene;
+  std::optional<double> from, to, step;
+  std::string csv, plot, draw;
+  bool rates = false, verbose = false;
+};
+
+const char* kUsage =
+    "usage: rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]\n"
+    "                           [--rates] [--verbose]\n"
+    "       rollkin --help | --version\n"
+    "\n"
+    "Kinematic analysis of planar mechanisms with rolling pairs. 'solve' loads the scene (JSON, see\n"
+    "docs/scene_format.md), assembles the mechanism and sweeps its input over the scene's \"sweep\"\n"
+    "(--from/--to/--step override it, in the scene's angle unit for angle inputs).\n"
+    "\n"
+    "  --csv FILE       one row per input value: the input, every other pair variable, (with --rates) the rates\n"
+    "                   d(var)/d(input), every link's world pose, the residual and the solver status\n"
+    "                   (angles in degrees, lengths in scene units)\n"
+    "  --plot FILE.svg  the pair variables against the input (angles; lengths in a second chart)\n"
+    "  --draw FILE.svg  the mechanism at about five poses across the solved range\n"
+    "  --rates          add the rate columns to the CSV\n"
+    "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
+    "\n"
+    "Without output options a one-line summary is printed.\n"
+    "Exit status: 0 all requested poses solved; 1 some not (limits on stderr, solved rows still written);\n"
+    "2 bad input or command line (nothing written).\n";
+
+double parse_value(const std::string& opt, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw UsageError(opt + " expects a number, got \"" + text + "\"");
+  return v;
+}
+
+Options parse_args(const std::vector<std::string>& args) {
+  Options o;
+  if (args.empty() || args[0] != "solve")
+    throw UsageError(args.empty() ? "missing command" : "unknown command \"" + args[0] + "\"; expected \"solve\"");
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    auto set_path = [&](std::string& slot) {
+      if (!slot.empty()) throw UsageError(a + " given twice");
+      slot = value();
+      if (slot.empty()) throw UsageError(a + " needs a file name");
+    };
+    if (a == "--from") o.from = parse_value(a, value());
+    else if (a == "--to") o.to = parse_value(a, value());
+    else if (a == "--step") o.step = parse_value(a, value());
+    else if (a == "--csv") set_path(o.csv);
+    else if (a == "--plot") set_path(o.plot);
+    else if (a == "--draw") set_path(o.draw);
+    else if (a == "--rates") o.rates = true;
+    else if (a == "--verbose" || a == "-v") o.verbose = true;
+    else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option \"" + a + "\"");
+    else if (o.scene.empty()) o.scene = a;
+    else throw UsageError("more than one scene file given (\"" + o.scene + "\" and \"" + a + "\")");
+  }
+  if (o.scene.empty()) throw UsageError("missing scene file");
+  return o;
+}
+
+/// The sweep to run: the scene's, with the command line's overrides.
+io::Sweep requested_sweep(const io::Scene& scene, const Options& o) {
+  io::Sweep s;
+  if (scene.sweep) {
+    s = *scene.sweep;
+  } else {
+    if (!o.from || !o.to || !o.step)
+      throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
+    s.input = scene.inputs.front();
+    s.driver = 0;
+    s.variable = scene.mechanism.drivers[0];
+    s.unit = scene.unit_of(s.variable);
+  }
+  if (o.from) s.from = *o.from;
+  if (o.to) s.to = *o.to;
+  if (o.step) s.step = *o.step;
+  const std::string bad = io::check_sweep(s);
+  if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
+  return s;
+}
+
+/// Key identifying a file for "same file" checks.
+std::string file_key(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path).lexically_normal().string() : p.string();
+}
+
+void check_outputs(const io::Scene& scene, const Options& o) {
+  std::vector<std::pair<std::string, std::string>> inputs{{scene.file, "the scene file"}};
+  for (const auto& f : scene.files_read) inputs.push_back({f, "a contour file read by the scene"});
+  std::vector<std::pair<std::string, std::string>> outputs;
+  if (!o.csv.empty()) outputs.push_back({"--csv", o.csv});
+  if (!o.plot.empty()) outputs.push_back({"--plot", o.plot});
+  if (!o.draw.empty()) outputs.push_back({"--draw", o.draw});
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string key = file_key(outputs[i].second);
+    for (const auto& in : inputs) {
+      std::error_code ec;
+      if (key == file_key(in.first) || fs::equivalent(outputs[i].second, in.first, ec))
+        throw UsageError("refusing to write " + outputs[i].first + " " + outputs[i].second + ": it is " + in.second +
+                         " (" + in.first + "); inputs are never overwritten");
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (key == file_key(outputs[j].second))
+        throw UsageError(outputs[i].first + " and " + outputs[j].first + " name the same file " + outputs[i].second);
+  }
+}
+
+std::string fmt(double v, int digits = 6) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+/// "O_A.theta2 = -57.397 deg" in the file's units.
+std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal) {
+  const std::string unit = scene.unit_label(sw.variable);
+  return sw.input + " = " + fmt(internal / sw.unit, 8) + (unit.empty() ? "" : " " + unit);
+}
+
+/// One line per limit for stderr, the input in the file's units.
+std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r) {
+  const Mechanism<double>& m = scene.mechanism;
+  const std::string where = input_text(scene, sw, r.limit_input);
+  switch (r.status) {
+    case SolveStatus::DeadPoint:
+      return "dead_point: dead point (motion limit) at " + where + ": the mechanism cannot move past it (Jacobian " +
+             "singular there, condition " + fmt(r.condition, 3) + ")";
+    case SolveStatus::DomainExit: {
+      std::string what = "a contact leaves its contour";
+      if (r.pair >= 0 && r.contour >= 0)
+        what = "the contact of pair '" + m.pairs[r.pair].name + "' leaves the end of contour '" + m.contours[r.contour].name() + "'";
+      return "domain_exit: " + what + " at " + where;
+    }
+    case SolveStatus::NoConvergence: return "no_convergence: Newton-Raphson does not converge beyond " + where;
+    default: return std::string(to_string(r.status)) + ": " + r.detail + " (at " + where + ")";
+  }
+}
+
+void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
+  const Mechanism<double>& m = scene.mechanism;
+  std::cout << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
+            << fmt(rep.residual, 3) << "\n"
+            << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()
+            << "), equations " << m.equation_count() << " (" << m.loops.size() << " loop(s) x 3 + "
+            << m.rolling_pairs.size() << " rolling)\n"
+            << "  rank of the unknowns' Jacobian " << rep.rank << ", condition " << fmt(rep.condition, 3) << "\n"
+            << "  rank of the full Jacobian " << ar.rank << ": redundant constraints " << ar.redundant
+            << ", mobility (DOF = variables - rank) " << ar.mobility << "\n";
+  if (!rep.detail.empty()) std::cout << "  " << rep.detail << "\n";
+}
+
+int run(const Options& o) {
+  const io::Scene scene = io::load_scene(o.scene);
+  check_outputs(scene, o);
+  const io::Sweep sw = requested_sweep(scene, o);
+  const std::vector<double> inputs = io::sweep_inputs(sw);
+  const Mechanism<double>& m = scene.mechanism;
+
+  SolveData<double> sd(m);
+  VectorX<double> q = scene.guess;
+  const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
+  const cli::AssemblyRank ar = cli::full_rank(m, sd);
+  if (o.verbose) print_assembly(scene, assembly, ar);
+  const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
+
+  // Everything is computed before anything is written.
+  cli::OutputContext ctx{scene, sw, result};
+  std::vector<std::pair<std::string, std::string>> files;
+  if (!o.csv.empty()) files.push_back({o.csv, cli::csv_text(ctx, o.rates)});
+  if (!o.plot.empty()) files.push_back({o.plot, cli::plot_svg(ctx)});
+  if (!o.draw.empty()) files.push_back({o.draw, cli::draw_svg(ctx)});
+  for (const auto& f : files) io::write_file_atomic(f.first, f.second);
+
+  std::size_t solved = 0;
+  double max_residual = 0;
+  for (const auto& p : result.poses)
+    if (p.report.ok()) {
+      ++solved;
+      max_residual = std::max(max_residual, p.report.residual);
+    }
+  std::vector<std::string> problems;
+  if (!assembly.ok())
+    problems.push_back(std::string(to_string(assembly.status)) + ": assembly failed: " +
+                       (assembly.detail.empty() ? "the mechanism cannot be assembled" : assembly.detail) +
+                       " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
+                       " unknowns, condition " + fmt(assembly.condition, 3) + ")");
+  for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+
+  const std::string unit = scene.unit_label(sw.variable);
+  std::ostringstream summary;
+  summary << fs::path(scene.file).filename().string() << ": " << solved << "/" << inputs.size() << " poses solved, "
+          << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to) << (unit.empty() ? "" : " " + unit)
+          << ", max residual " << fmt(max_residual, 2) << ", ";
+  if (!assembly.ok()) {
+    summary << "assembly failed (" << to_string(assembly.status) << ")";
+  } else if (result.limits.empty()) {
+    summary << "no limits met";
+  } else {
+    summary << result.limits.size() << " limit(s) met:";
+    for (std::size_t i = 0; i < result.limits.size(); ++i)
+      summary << (i ? "," : "") << " " << to_string(result.limits[i].status) << " at "
+              << fmt(result.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
+  }
+  std::cout << summary.str() << "\n";
+  for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
+  return solved == inputs.size() && assembly.ok() ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    for (const auto& a : args) {
+      if (a == "--help" || a == "-h" || a == "help") {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (a == "--version") {
+        std::cout << "rollkin " << ROLLKIN_VERSION << "\n";
+        return 0;
+      }
+    }
+    return run(parse_args(args));
+  } catch (const UsageError& e) {
+    std::cerr << "rollkin: " << e.what() << "\n(rollkin --help for usage)\n";
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "rollkin: error: " << e.what() << "\n";
+    return 2;
+  } catch (...) {
+    std::cerr << "rollkin: unexpected error\n";
+    return 2;
+  }
+}

@@ -1,0 +1,234 @@
+#include "output.hpp"
+
+#include "rollkin/io/csv.hpp"
+#include "rollkin/io/svg.hpp"
+
+#include <Eigen/QR>
+
+#include <cmath>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+
+namespace rollkin::cli {
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Output units: degrees for angles, scene units otherwise.
+double out_scale(const Mechanism<double>& m, int var) {
+  return m.variables[var].kind == ParamKind::Angle ? 180.0 / pi<double>() : 1.0;
+}
+
+std::string base_name(const std::string& file) { return std::filesystem::path(file).filename().string(); }
+
+std::string axis_label(const OutputContext& ctx, int var) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  switch (m.variables[var].kind) {
+    case ParamKind::Angle: return m.variables[var].name + " [deg]";
+    case ParamKind::Length: return m.variables[var].name + " [" + ctx.scene.length_unit + "]";
+    case ParamKind::Unitless: return m.variables[var].name;
+  }
+  return m.variables[var].name;
+}
+
+std::string strip_header(const std::string& svg) {
+  const std::size_t at = svg.find("<svg");
+  return at == std::string::npos ? svg : svg.substr(at);
+}
+
+}  // namespace
+
+std::string csv_text(const OutputContext& ctx, bool rates) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const int input = ctx.sweep.variable;
+  std::vector<std::string> cols{m.variables[input].name};
+  std::vector<int> others;
+  for (int i = 0; i < m.variable_count(); ++i)
+    if (i != input) {
+      others.push_back(i);
+      cols.push_back(m.variables[i].name);
+    }
+  if (rates)
+    for (int i : m.unknowns) cols.push_back("d(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")");
+  for (const auto& l : m.links) {
+    cols.push_back(l.name + ".x");
+    cols.push_back(l.name + ".y");
+    cols.push_back(l.name + ".angle");
+  }
+  cols.push_back("residual");
+  io::CsvWriter csv(cols, "status");
+  KinematicsData<double> kin(m);
+  const double in_scale = out_scale(m, input);
+  for (const auto& pose : ctx.result.poses) {
+    std::vector<double> row{pose.input * in_scale};
+    const bool ok = pose.report.ok();
+    for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
+    if (rates)
+      for (int i : m.unknowns) row.push_back(ok ? pose.qdot(i) * out_scale(m, i) / in_scale : kNaN);
+    std::vector<SE2<double>> lp;
+    if (ok) {
+      evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);
+      lp = link_poses(m, kin);
+    }
+    for (std::size_t l = 0; l < m.links.size(); ++l) {
+      row.push_back(ok ? lp[l].translation().x() : kNaN);
+      row.push_back(ok ? lp[l].translation().y() : kNaN);
+      row.push_back(ok ? rad_to_deg(lp[l].angle()) : kNaN);
+    }
+    row.push_back(ok ? pose.report.residual : kNaN);
+    csv.add_row(row, to_string(pose.report.status));
+  }
+  return csv.to_string();
+}
+
+std::string plot_svg(const OutputContext& ctx) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const int input = ctx.sweep.variable;
+  const double in_scale = out_scale(m, input);
+  std::vector<double> x;
+  for (const auto& p : ctx.result.poses) x.push_back(p.input * in_scale);
+  const std::string name = base_name(ctx.scene.file);
+
+  io::SvgChart angles(760, 460), lengths(760, 460);
+  angles.set_title(name + ": pair angles against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
+      .set_y_label("angle [deg]").set_legend(io::LegendPosition::Outside);
+  lengths.set_title(name + ": contact parameters against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
+      .set_y_label("length [" + ctx.scene.length_unit + "] or parameter").set_legend(io::LegendPosition::Outside);
+  std::size_t n_angles = 0, n_lengths = 0;
+  for (int i = 0; i < m.variable_count(); ++i) {
+    if (i == input) continue;
+    std::vector<double> y;
+    for (const auto& p : ctx.result.poses) y.push_back(p.report.ok() ? p.q(i) * out_scale(m, i) : kNaN);
+    const bool is_angle = m.variables[i].kind == ParamKind::Angle;
+    const std::size_t k = is_angle ? n_angles++ : n_lengths++;
+    io::ChartSeries s;
+    s.name = m.variables[i].name;
+    s.x = x;
+    s.y = std::move(y);
+    s.color = io::palette_color(static_cast<std::size_t>(i));
+    if (k >= 10) s.dash = "6 3";
+    (is_angle ? angles : lengths).add_series(std::move(s));
+  }
+  if (n_lengths == 0) return angles.to_svg();
+  if (n_angles == 0) return lengths.to_svg();
+  // Two charts stacked in one document (nested <svg> elements).
+  const int w = angles.width(), h = angles.height() + lengths.height();
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+                    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
+                    "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
+  std::string top = strip_header(angles.to_svg()), bottom = strip_header(lengths.to_svg());
+  top.insert(4, " x=\"0\" y=\"0\"");
+  bottom.insert(4, " x=\"0\" y=\"" + std::to_string(angles.height()) + "\"");
+  return out + top + bottom + "</svg>\n";
+}
+
+std::string draw_svg(const OutputContext& ctx) {
+  const io::Scene& scene = ctx.scene;
+  const Mechanism<double>& m = scene.mechanism;
+  const auto& poses = ctx.result.poses;
+  std::vector<std::size_t> solved;
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    if (poses[i].report.ok()) solved.push_back(i);
+  // Up to five poses, spread over the solved ones in input order.
+  std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return poses[a].input < poses[b].input; });
+  std::vector<std::size_t> pick;
+  const std::size_t count = std::min<std::size_t>(5, solved.size());
+  for (std::size_t k = 0; k < count; ++k)
+    pick.push_back(solved[count == 1 ? 0 : (k * (solved.size() - 1) + (count - 1) / 2) / (count - 1)]);
+
+  io::SvgDrawing d(900, 680, 30);
+  d.set_title(base_name(scene.file) + ": mechanism at " + std::to_string(count) + " pose(s), later poses darker");
+  KinematicsData<double> kin(m);
+  const int input = ctx.sweep.variable;
+  const double in_scale = out_scale(m, input);
+  const std::string unit = input >= 0 && m.variables[input].kind == ParamKind::Angle ? " deg" : "";
+  std::vector<std::pair<std::string, double>> labels;
+  for (std::size_t k = 0; k < pick.size(); ++k) {
+    const auto& pose = poses[pick[k]];
+    const double opacity = 0.2 + 0.8 * static_cast<double>(k + 1) / static_cast<double>(pick.size());
+    evaluate_pairs<double>(m, pose.q, nullptr, 2, kin);
+    const std::vector<SE2<double>> lp = link_poses(m, kin);
+    // Contours, 200 samples each, in world coordinates.
+    for (const auto& c : m.contours) {
+      const Domain<double> dom = c.domain();
+      const int n = 200;
+      std::vector<Eigen::Vector2d> pts;
+      for (int i = 0; i < n; ++i) {
+        const double t = dom.closed ? dom.lo + dom.period() * i / n : dom.lo + (dom.hi - dom.lo) * i / (n - 1);
+        pts.push_back(lp[c.link()].act(c.jet(t, 0).p));
+      }
+      io::Stroke st;
+      st.color = c.link() == m.ground ? "#000000" : io::palette_color(static_cast<std::size_t>(c.link()));
+      st.width = 1.6;
+      st.opacity = opacity;
+      d.add_polyline(pts, st, dom.closed);
+    }
+    // Link bodies: joints and contour origins of each moving link joined by a thin line.
+    for (std::size_t l = 0; l < m.links.size(); ++l) {
+      if (static_cast<int>(l) == m.ground) continue;
+      std::vector<Eigen::Vector2d> anchors;
+      for (const auto& p : m.pairs) {
+        if (is_contact(p.kind)) continue;
+        if (p.link_a == static_cast<int>(l)) anchors.push_back(lp[l].act(p.frame_a.translation()));
+        if (p.link_b == static_cast<int>(l)) anchors.push_back(lp[l].act(p.frame_b.translation()));
+      }
+      for (const auto& c : m.contours)
+        if (c.link() == static_cast<int>(l)) anchors.push_back(lp[l].act(c.placement().translation()));
+      if (anchors.size() >= 2) {
+        io::Stroke st;
+        st.color = io::palette_color(l);
+        st.width = 2.4;
+        st.opacity = opacity;
+        d.add_polyline(anchors, st);
+      }
+    }
+    for (std::size_t p = 0; p < m.pairs.size(); ++p) {
+      const Pair<double>& pr = m.pairs[p];
+      if (is_contact(pr.kind)) {
+        d.add_point(lp[pr.link_a].act(kin.pairs[p].contact[0].p), "#d62728", 3.5, io::Marker::Dot);
+      } else if (pr.link_a != m.ground && pr.link_b != m.ground) {
+        d.add_point(lp[pr.link_a].act(pr.frame_a.translation()), "#333333", 3.5, io::Marker::Circle);
+      }
+    }
+    labels.push_back({m.variables[input].name + " = " + [&] {
+                        char buf[32];
+                        std::snprintf(buf, sizeof buf, "%.6g", pose.input * in_scale);
+                        return std::string(buf);
+                      }() + unit,
+                      opacity});
+  }
+  // Ground pivots.
+  for (const auto& pr : m.pairs) {
+    if (is_contact(pr.kind) || (pr.link_a != m.ground && pr.link_b != m.ground)) continue;
+    const Eigen::Vector2d at = pr.link_a == m.ground ? pr.frame_a.translation() : pr.frame_b.translation();
+    d.add_point(at, "#000000", 5, io::Marker::Square);
+    d.add_text(at, pr.name, 12, "#000000", 6, 14);
+  }
+  // Legend: one line per pose above the content, darker for later poses.
+  const Eigen::Vector4d box = d.content_box();
+  const double line = 0.045 * std::max(box(2) - box(0), box(3) - box(1));
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const int g = static_cast<int>(200 * (1 - labels[k].second));
+    char color[16];
+    std::snprintf(color, sizeof color, "#%02x%02x%02x", g, g, g);
+    d.add_text(Eigen::Vector2d(box(0), box(3) + line * static_cast<double>(labels.size() - k)), labels[k].first, 12, color, 0, 0);
+  }
+  if (pick.empty()) d.add_text(Eigen::Vector2d(0, 0), "no solved pose to draw", 14, "#d62728", 0, 0);
+  return d.to_svg();
+}
+
+AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd) {
+  MatrixX<double> j = sd.kin.jacobian;
+  for (int c = 0; c < m.variable_count(); ++c) j.col(c) = j.col(c).cwiseQuotient(sd.row_scale) * m.variable_scale(c);
+  Eigen::CompleteOrthogonalDecomposition<MatrixX<double>> cod(j);
+  AssemblyRank r;
+  r.rank = static_cast<int>(cod.rank());
+  r.redundant = m.equation_count() - r.rank;
+  r.mobility = m.variable_count() - r.rank;
+  return r;
+}
+
+}  // namespace rollkin::cli

@@ -1,0 +1,37 @@
+// Output of the command-line tool: the CSV table, the chart of the pair variables and the drawing of the
+// mechanism, each built in memory as text (the caller writes them atomically once everything succeeded).
+#pragma once
+
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <string>
+
+namespace rollkin::cli {
+
+struct OutputContext {
+  const io::Scene& scene;
+  const io::Sweep& sweep;
+  const SweepResult<double>& result;
+};
+
+/// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
+/// <link>.x, <link>.y, <link>.angle, residual, status. Angles in degrees, lengths in scene units.
+std::string csv_text(const OutputContext& ctx, bool rates);
+
+/// SVG chart(s) of the non-input pair variables against the input: angles in one chart, lengths and
+/// unitless parameters in a second one below it (when there are any).
+std::string plot_svg(const OutputContext& ctx);
+
+/// SVG drawing of the mechanism at up to five poses spread over the solved ones.
+std::string draw_svg(const OutputContext& ctx);
+
+/// Rank of the full (scaled) constraint Jacobian at the pose sd was last evaluated at.
+struct AssemblyRank {
+  int rank = 0;
+  int redundant = 0;  // equations - rank
+  int mobility = 0;   // variables - rank
+};
+AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd);
+
+}  // namespace rollkin::cli
