@@ -39,7 +39,7 @@ template <class S> struct KinematicsData {
 };
 
 /// Evaluates every pair at q (and qdot when order >= 3, for accelerations).
-template <class S> void evaluate_pairs(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>* qdot,
+template <class S> void evaluate_pairs(const Mechanism<S>& m, const VectorX<S>& q, const std::common_type_t<VectorX<S>>* qdot,
                                        int order, KinematicsData<S>& d) {
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
     const int i = m.pairs[k].first_variable;

@@ -19,6 +19,7 @@
 #include "rollkin/profile/profile.hpp"
 
 #include <array>
+#include <type_traits>
 #include <string>
 
 namespace rollkin {
@@ -77,7 +78,7 @@ template <class S> struct PairState {
 
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
 template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,
-                                             const S* q, const S* qdot, int order) {
+                                             const S* q, const std::common_type_t<S>* qdot, int order) {
   PairState<S> st;
   const Twist<S> zero = Twist<S>::Zero();
   st.twist_rate = {zero, zero};

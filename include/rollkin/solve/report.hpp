@@ -2,6 +2,7 @@
 // these and the caller (CLI, tests) decides what to say.
 #pragma once
 
+#include <ostream>
 #include <string>
 
 namespace rollkin {
@@ -28,6 +29,8 @@ inline const char* to_string(SolveStatus s) {
   }
   return "?";
 }
+
+inline std::ostream& operator<<(std::ostream& os, SolveStatus s) { return os << to_string(s); }
 
 template <class S> struct SolveReport {
   SolveStatus status = SolveStatus::NoConvergence;

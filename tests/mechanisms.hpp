@@ -1,0 +1,123 @@
+// Mechanisms used by several tests, built in code (the scene files in examples/ describe the same ones).
+// Templates on the scalar so the MPFR tests run the very same mechanisms.
+#pragma once
+
+#include "rollkin/builder.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+namespace rollkin::testing {
+
+/// A mechanism with its assembly guess and the variables held at assembly.
+template <class S> struct Fixture {
+  Mechanism<S> mech;
+  VectorX<S> guess;
+  std::vector<int> held;
+};
+
+/// The reference example of method.md section 4 (variables: theta2, x, theta23, theta34, theta4, theta5).
+/// `scale` multiplies every length; `osculating` puts disk 3 of radius 1/(2a) inside the parabola's cup.
+template <class S> Fixture<S> paper_fourbar(const S& scale = S(1), bool osculating = false,
+                                            ArcLengthMethod arc = {}) {
+  MechanismBuilder<S> b;
+  const int l1 = b.link("link1", true), l2 = b.link("link2"), l3 = b.link("link3"), l4 = b.link("link4");
+  const S a = S(1) / (S(2) * scale);  // y = a x^2 with a = 0.5 at scale 1
+  // Parabola: vertex l2 = 2 from O_A on the crank line, axis along the crank, opening toward O_A.
+  const int par = b.contour(l2, "parabola", Parabola<S>(a, S(-2) * scale, S(2) * scale, arc),
+                            SE2<S>(pi<S>() / S(2), Vec2<S>(S(2) * scale, S(0))), osculating);
+  const int rim3 = b.contour(l3, "rim", Circle<S>(S(1) * scale));
+  const int rim4 = b.contour(l4, "rim", Circle<S>(S(4) * scale), SE2<S>(S(0), Vec2<S>(S(2) * scale, S(0))));
+  const int oa = b.revolute("O_A", l1, l2, SE2<S>(), SE2<S>(), "theta2");
+  b.contact("A", true, par, rim3, "x", "theta23");
+  b.contact("B", true, rim3, rim4, "theta34", "theta4");
+  b.revolute("O_B", l1, l4, SE2<S>(S(0), Vec2<S>(S(7) * scale, S(-2) * scale)), SE2<S>(), "theta5");
+  b.driver(oa);
+  Fixture<S> f{b.build(), VectorX<S>(6), {1, 2}};
+  // Disk 3 touches the vertex from the convex side (centre (3, 0)) or from inside the cup (centre (1, 0)).
+  const S deg = pi<S>() / S(180);
+  if (!osculating) f.guess << S(0), S(0), S(180) * deg, S(-3) * deg, S(117) * deg, S(60) * deg;
+  else f.guess << S(0), S(0), S(0), S(-3) * deg, S(117) * deg, S(80) * deg;
+  return f;
+}
+
+/// Planet disk of radius r on an arm (input, revolute at the ring centre) rolling inside a fixed ring of
+/// radius R (outside = true: on the outside of a fixed disk, the epicycloid). Variables:
+/// arm, planet (relative to the arm), u (ring), v (planet rim). Overconstrained: 4 equations, 3 unknowns.
+template <class S> Fixture<S> planet_on_arm(const S& R, const S& r, bool outside) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true), arm = b.link("arm"), planet = b.link("planet");
+  const S centre = outside ? S(R + r) : S(R - r);
+  const int ring = b.contour(ground, "ring", Circle<S>(R), SE2<S>(), !outside);  // ring: material outside
+  const int rim = b.contour(planet, "rim", Circle<S>(r));
+  const int drive = b.revolute("arm", ground, arm, SE2<S>(), SE2<S>(), "phi");
+  b.revolute("planet", arm, planet, SE2<S>(S(0), Vec2<S>(centre, S(0))), SE2<S>(), "psi");
+  b.contact("mesh", true, ring, rim, "u", "v");
+  b.driver(drive);
+  Fixture<S> f{b.build(), VectorX<S>(4), {}};
+  // Contact on the +x axis: the ring's point at angle 0 (reversed parameter: u = -0), the planet's at pi or 0.
+  f.guess << S(0), S(0), S(0), outside ? pi<S>() : S(0);
+  return f;
+}
+
+/// Twin elliptical gears (semi-major a, eccentricity e), each on a revolute at a focus, pivots 2a apart;
+/// gear 1's nearest vertex touches gear 2's farthest vertex at phi1 = 0. Variables:
+/// phi1 (input), u (gear 1, eccentric anomaly), v (gear 2), phi2. The guess is the exact pose at phi1 = start
+/// (closed form of method.md section 5): as a cam pair the vertex poses are singular, because the contact
+/// normal then passes through both pivots, so a cam mechanism is assembled away from them.
+template <class S> Fixture<S> elliptical_gears(const S& a, const S& e, bool rolling, ArcLengthMethod arc = {},
+                                               const S& start = S(0)) {
+  using std::sqrt;
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true), g1 = b.link("gear1"), g2 = b.link("gear2");
+  const S c = a * e, semi_minor = a * sqrt(S(1) - e * e);
+  const SE2<S> centre_left_of_focus(S(0), Vec2<S>(-c, S(0)));
+  const int e1 = b.contour(g1, "pitch", Ellipse<S>(a, semi_minor, arc), centre_left_of_focus);
+  const int e2 = b.contour(g2, "pitch", Ellipse<S>(a, semi_minor, arc), centre_left_of_focus);
+  const int drive = b.revolute("pivot1", ground, g1, SE2<S>(), SE2<S>(), "phi1");
+  b.contact("mesh", rolling, e1, e2, "u", "v");
+  b.revolute("pivot2", ground, g2, SE2<S>(S(0), Vec2<S>(S(2) * a, S(0))), SE2<S>(), "phi2");
+  b.driver(drive);
+  Fixture<S> f{b.build(), VectorX<S>(4), {}};
+  // Gear 1 turned by start: its contact point has polar angle -start about its focus, eccentric anomaly
+  // u = 2 atan(sqrt((1-e)/(1+e)) tan(theta/2)); gear 2 turned by phi2 = -2 atan(((1-e)/(1+e)) tan(start/2))
+  // touches with its point of polar angle pi - phi2 (measured from its nearest vertex).
+  using std::atan;
+  using std::tan;
+  const S k = sqrt((S(1) - e) / (S(1) + e));
+  const S phi2 = S(-2) * atan(k * k * tan(start / S(2)));
+  const S u = S(2) * atan(k * tan(-start / S(2)));
+  const S theta2 = pi<S>() - phi2;
+  const S v = S(2) * atan(k * tan(theta2 / S(2)));
+  f.guess << start, u, v, phi2;
+  return f;
+}
+
+/// Disk of radius r rolling on the ground line y = 0: its centre rides a slider (driven prismatic at
+/// height r) and turns on a revolute. Variables: x (input), theta (disk), u (line), v (disk rim).
+template <class S> Fixture<S> disk_on_line(const S& r) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true), slider = b.link("slider"), disk = b.link("disk");
+  // The floor's material lies below it: the line runs along +x with the material on its right (reversed).
+  const int line = b.contour(ground, "floor", Line<S>(S(-100) * r, S(100) * r), SE2<S>(), true);
+  const int rim = b.contour(disk, "rim", Circle<S>(r));
+  const int drive = b.prismatic("slide", ground, slider, SE2<S>(S(0), Vec2<S>(S(0), r)), SE2<S>(), "x");
+  b.revolute("axle", slider, disk, SE2<S>(), SE2<S>(), "theta");
+  b.contact("tread", true, line, rim, "u", "v");
+  b.driver(drive);
+  Fixture<S> f{b.build(), VectorX<S>(4), {}};
+  f.guess << S(0), S(0), S(0), S(-1) * pi<S>() / S(2);
+  return f;
+}
+
+/// Assembles a fixture; returns the report (q holds the assembled pose, sd is ready for sweep()).
+template <class S> SolveReport<S> assemble_fixture(const Fixture<S>& f, VectorX<S>& q, SolveData<S>& sd) {
+  q = f.guess;
+  return assemble(f.mech, q, sd, f.held);
+}
+
+template <class S> std::vector<S> degrees(int from, int to, int step = 1) {
+  std::vector<S> v;
+  for (int d = from; step > 0 ? d <= to : d >= to; d += step) v.push_back(S(d) * pi<S>() / S(180));
+  return v;
+}
+
+}  // namespace rollkin::testing

@@ -1,0 +1,90 @@
+// Constraint equations (eq. 6 loops, eq. 3 rolling rows): analytic Jacobian against central finite
+// differences of the residual, the acceleration bias against the directional derivative of J qdot, the
+// loops found from the graph, and link poses from the spanning tree.
+#define BOOST_TEST_MODULE kinematics
+#include <boost/test/unit_test.hpp>
+
+#include "mechanisms.hpp"
+
+using namespace rollkin;
+using namespace rollkin::testing;
+
+namespace {
+
+VectorX<double> residual_at(const Mechanism<double>& m, KinematicsData<double>& d, const VectorX<double>& q) {
+  evaluate_pairs<double>(m, q, nullptr, 2, d);
+  compute_constraints(m, q, d);
+  return d.residual;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(paper_loop_is_found_from_the_graph) {
+  const auto f = paper_fourbar<double>();
+  BOOST_TEST(f.mech.loops.size() == 1u);
+  BOOST_TEST(f.mech.loops[0].size() == 4u);  // O_A, A, B, O_B
+  BOOST_TEST(f.mech.equation_count() == 5);  // 3 loop rows + 2 rolling rows (eqs. 6, 7a, 7b)
+  BOOST_TEST(f.mech.unknowns.size() == 5u);
+}
+
+BOOST_AUTO_TEST_CASE(jacobian_matches_finite_differences_away_from_closure) {
+  for (const auto& f : {paper_fourbar<double>(), elliptical_gears<double>(2, 0.5, true), planet_on_arm<double>(4, 1, false)}) {
+    KinematicsData<double> d(f.mech);
+    d.reference = f.guess;
+    VectorX<double> q = f.guess;
+    for (int i = 0; i < q.size(); ++i) q(i) += 0.05 * std::sin(3.0 * i + 1);  // not closed: T != I
+    residual_at(f.mech, d, q);
+    const MatrixX<double> jac = d.jacobian;
+    const double h = 1e-6;
+    for (int j = 0; j < q.size(); ++j) {
+      VectorX<double> qp = q, qm = q;
+      qp(j) += h;
+      qm(j) -= h;
+      const VectorX<double> fd = (residual_at(f.mech, d, qp) - residual_at(f.mech, d, qm)) / (2 * h);
+      BOOST_TEST((fd - jac.col(j)).cwiseAbs().maxCoeff() < 1e-8, "column " << j);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(acceleration_bias_is_directional_derivative_of_j_qdot) {
+  auto f = paper_fourbar<double>();
+  SolveData<double> sd(f.mech);
+  VectorX<double> q;
+  BOOST_TEST_REQUIRE(assemble_fixture(f, q, sd).ok());
+  q(0) = 0.4;  // move the input and re-close
+  BOOST_TEST_REQUIRE(solve_position(f.mech, q, sd).ok());
+  VectorX<double> rate(1);
+  rate << 1.0;
+  const VectorX<double> qdot = solve_velocity(f.mech, sd, rate);
+  evaluate_pairs<double>(f.mech, q, &qdot, 3, sd.kin);
+  compute_bias(f.mech, qdot, sd.kin);
+  const VectorX<double> gamma = sd.kin.bias;
+  const double h = 1e-6;
+  KinematicsData<double> d(f.mech);
+  d.reference = sd.kin.reference;
+  residual_at(f.mech, d, q + h * qdot);
+  const VectorX<double> jp = d.jacobian * qdot;
+  residual_at(f.mech, d, q - h * qdot);
+  const VectorX<double> jm = d.jacobian * qdot;
+  BOOST_TEST(((jp - jm) / (2 * h) - gamma).cwiseAbs().maxCoeff() < 1e-7);
+}
+
+BOOST_AUTO_TEST_CASE(link_poses_close_every_loop) {
+  auto f = paper_fourbar<double>();
+  SolveData<double> sd(f.mech);
+  VectorX<double> q;
+  BOOST_TEST_REQUIRE(assemble_fixture(f, q, sd).ok());
+  const auto pose = link_poses(f.mech, sd.kin);
+  // The chord O_B (ground -> link4) was not used by the tree; it must agree with link 4's tree pose.
+  const SE2<double> via_chord = pose[0] * sd.kin.pairs[3].transform;
+  BOOST_TEST((via_chord.translation() - pose[3].translation()).norm() < 1e-13);
+  BOOST_TEST(std::abs(wrap_angle(via_chord.angle() - pose[3].angle())) < 1e-13);
+  // Disk 3's centre is at (3, 0) at assembly (contact at the vertex, method.md section 4).
+  BOOST_TEST((pose[2].translation() - Vec2<double>(3, 0)).norm() < 1e-13);
+  // Disk 4's centre: the upper point 5 from (3, 0) and 2 from O_B = (7, -2): about (7.99303, -0.26394).
+  const Vec2<double> c4 = pose[3].act(Vec2<double>(2, 0));
+  BOOST_TEST((c4 - Vec2<double>(3, 0)).norm() == 5.0, boost::test_tools::tolerance(1e-13));
+  BOOST_TEST((c4 - Vec2<double>(7, -2)).norm() == 2.0, boost::test_tools::tolerance(1e-13));
+  BOOST_TEST(c4.x() == 7.99303, boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(c4.y() == -0.26394, boost::test_tools::tolerance(1e-4));
+}
