@@ -199,6 +199,24 @@ void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, cons
   if (!rep.detail.empty()) std::cout << "  " << rep.detail << "\n";
 }
 
+/// Contact pairs whose signed curvatures cancel at q (osculation): their contact Jacobian is singular
+/// (method.md section 5), which the solver reports only as a rank loss.
+std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const VectorX<double>& q) {
+  std::vector<std::string> out;
+  KinematicsData<double> kin(m);
+  evaluate_pairs<double>(m, q, nullptr, 2, kin);
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    if (!is_contact(m.pairs[k].kind)) continue;
+    const double ka = kin.pairs[k].contact[0].curvature(), kb = kin.pairs[k].contact[1].curvature();
+    const double size = std::max(std::abs(ka), std::abs(kb));
+    if (size > 0 && std::abs(ka + kb) <= 1e-6 * size)
+      out.push_back("osculation: at the assembly pose the contours of pair '" + m.pairs[k].name +
+                    "' osculate (signed curvatures " + fmt(ka) + " and " + fmt(kb) +
+                    " cancel), so the contact Jacobian is singular there; choose another assembly pose or geometry");
+  }
+  return out;
+}
+
 int run(const Options& o) {
   const io::Scene scene = io::load_scene(o.scene);
   check_outputs(scene, o);
@@ -214,7 +232,8 @@ int run(const Options& o) {
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
 
   // Everything is computed before anything is written.
-  cli::OutputContext ctx{scene, sw, result};
+  const std::vector<double> file_values = io::sweep_values(sw);
+  cli::OutputContext ctx{scene, sw, result, file_values};
   std::vector<std::pair<std::string, std::string>> files;
   if (!o.csv.empty()) files.push_back({o.csv, cli::csv_text(ctx, o.rates)});
   if (!o.plot.empty()) files.push_back({o.plot, cli::plot_svg(ctx)});
@@ -235,6 +254,8 @@ int run(const Options& o) {
                        " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
                        " unknowns, condition " + fmt(assembly.condition, 3) + ")");
   for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+  if (!assembly.ok())
+    for (const auto& note : osculating_contacts(m, q)) problems.push_back(note);
 
   const std::string unit = scene.unit_label(sw.variable);
   std::ostringstream summary;

@@ -62,8 +62,11 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
   io::CsvWriter csv(cols, "status");
   KinematicsData<double> kin(m);
   const double in_scale = out_scale(m, input);
-  for (const auto& pose : ctx.result.poses) {
-    std::vector<double> row{pose.input * in_scale};
+  // The input column from the requested values in file units (exact grid values for a "deg" file).
+  const bool radians_file_angle = !ctx.scene.degrees && m.variables[input].kind == ParamKind::Angle;
+  for (std::size_t r = 0; r < ctx.result.poses.size(); ++r) {
+    const auto& pose = ctx.result.poses[r];
+    std::vector<double> row{radians_file_angle ? rad_to_deg(ctx.inputs[r]) : ctx.inputs[r]};
     const bool ok = pose.report.ok();
     for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
     if (rates)
@@ -90,6 +93,7 @@ std::string plot_svg(const OutputContext& ctx) {
   const double in_scale = out_scale(m, input);
   std::vector<double> x;
   for (const auto& p : ctx.result.poses) x.push_back(p.input * in_scale);
+  (void)ctx.inputs;
   const std::string name = base_name(ctx.scene.file);
 
   io::SvgChart angles(760, 460), lengths(760, 460);

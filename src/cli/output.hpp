@@ -13,6 +13,7 @@ struct OutputContext {
   const io::Scene& scene;
   const io::Sweep& sweep;
   const SweepResult<double>& result;
+  const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
 };
 
 /// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's

@@ -783,12 +783,18 @@ std::string check_sweep(const Sweep& s) {
   return "";
 }
 
-std::vector<double> sweep_inputs(const Sweep& s) {
+std::vector<double> sweep_values(const Sweep& s) {
   const std::string bad = check_sweep(s);
   if (!bad.empty()) throw std::invalid_argument("sweep: " + bad);
   const double n = std::floor((s.to - s.from) / s.step + 1e-9);
   std::vector<double> out;
-  for (long k = 0; k <= static_cast<long>(n); ++k) out.push_back((s.from + s.step * static_cast<double>(k)) * s.unit);
+  for (long k = 0; k <= static_cast<long>(n); ++k) out.push_back(s.from + s.step * static_cast<double>(k));
+  return out;
+}
+
+std::vector<double> sweep_inputs(const Sweep& s) {
+  std::vector<double> out = sweep_values(s);
+  for (double& v : out) v *= s.unit;
   return out;
 }
 

@@ -61,6 +61,9 @@ Scene parse_scene(const std::string& text, const std::string& file);
 /// wrong sign or more than 10 million values.
 std::vector<double> sweep_inputs(const Sweep& sweep);
 
+/// The same values in the FILE's units (from + k step, exactly as the grid defines them).
+std::vector<double> sweep_values(const Sweep& sweep);
+
 /// Checks a sweep's numbers (step non-zero, with the sign of to - from, finite, not too many values);
 /// returns an empty string when fine, else what is wrong.
 std::string check_sweep(const Sweep& sweep);
