@@ -229,6 +229,12 @@ int run(const Options& o) {
   const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
   const cli::AssemblyRank ar = cli::full_rank(m, sd);
   if (o.verbose) print_assembly(scene, assembly, ar);
+  // Inconsistent constraints at assembly are a problem of the scene (sizes, frames, values), not a motion
+  // limit: treated like any other bad input (exit 2, nothing written).
+  if (assembly.status == SolveStatus::CannotAssemble)
+    throw InputError(scene.file, "pairs",
+                     "the mechanism cannot be assembled: " + assembly.detail +
+                         "; expected pair frames, contour sizes and \"values\" that let every loop close");
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
 
   // Everything is computed before anything is written.
