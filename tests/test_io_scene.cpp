@@ -1,0 +1,293 @@
+#define BOOST_TEST_MODULE io_scene
+#include <boost/test/unit_test.hpp>
+
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using rollkin::InputError;
+using rollkin::deg_to_rad;
+using rollkin::io::Scene;
+using rollkin::io::load_scene;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kExamples = std::string(ROLLKIN_SOURCE_DIR) + "/examples/";
+
+fs::path temp_dir() {
+  const auto dir = fs::temp_directory_path() / "rollkin_test_io_scene";
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const fs::path path = temp_dir() / name;
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The paper example's text with `from` replaced by `to` (which must occur).
+std::string paper_with(const std::string& from, const std::string& to) {
+  std::string text = read_text(kExamples + "paper_fourbar.json");
+  const std::size_t at = text.find(from);
+  BOOST_REQUIRE_MESSAGE(at != std::string::npos, "test setup: \"" << from << "\" not in the paper example");
+  return text.replace(at, from.size(), to);
+}
+
+/// The InputError message for loading `text` saved as `name`, or "" if it loads.
+std::string error_for(const std::string& name, const std::string& text) {
+  try {
+    load_scene(write_temp(name, text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+  if (s.find(part) != std::string::npos) return true;
+  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
+  return false;
+}
+
+/// Every error names the file, the JSON path and what was expected.
+void expect_error(const std::string& name, const std::string& text, const std::string& path, const std::string& expected) {
+  const std::string msg = error_for(name, text);
+  BOOST_TEST_CONTEXT(name) {
+    BOOST_TEST(!msg.empty());
+    BOOST_TEST(contains(msg, name));
+    BOOST_TEST(contains(msg, path));
+    BOOST_TEST(contains(msg, expected));
+  }
+}
+
+}  // namespace
+
+// ---- examples -------------------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(paper_example_loads_as_specified) {
+  const Scene s = load_scene(kExamples + "paper_fourbar.json");
+  const auto& m = s.mechanism;
+  BOOST_TEST(m.links.size() == 4u);
+  BOOST_TEST(m.links[m.ground].name == "link1");
+  std::vector<std::string> names;
+  for (const auto& v : m.variables) names.push_back(v.name);
+  const std::vector<std::string> expected{"O_A.theta2", "A.x", "A.theta23", "B.theta34", "B.theta4", "O_B.theta5"};
+  BOOST_TEST(names == expected, boost::test_tools::per_element());
+  BOOST_TEST(m.drivers == std::vector<int>{0}, boost::test_tools::per_element());
+  BOOST_TEST(s.held == (std::vector<int>{1, 2}), boost::test_tools::per_element());
+  BOOST_TEST(s.guess(2) == deg_to_rad(180.0));
+  BOOST_TEST(s.guess(5) == deg_to_rad(60.0));
+  BOOST_TEST(m.contours[0].name() == "link2.parabola");
+  BOOST_TEST(!m.contours[0].reversed());  // "inside" the cup = the natural left side for a > 0
+  BOOST_TEST(m.pairs[3].frame_a.translation().x() == 7.0);
+  BOOST_TEST(m.pairs[3].frame_a.translation().y() == -2.0);
+  BOOST_REQUIRE(s.sweep.has_value());
+  BOOST_TEST(s.sweep->input == "O_A.theta2");
+  const std::vector<double> in = rollkin::io::sweep_inputs(*s.sweep);
+  BOOST_TEST(in.size() == 151u);
+  BOOST_TEST(in.front() == deg_to_rad(-50.0), boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(in.back() == deg_to_rad(100.0), boost::test_tools::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(paper_example_assembles_at_the_reference_pose) {
+  const Scene s = load_scene(kExamples + "paper_fourbar.json");
+  rollkin::SolveData<double> sd(s.mechanism);
+  rollkin::VectorX<double> q = s.guess;
+  const auto rep = rollkin::assemble(s.mechanism, q, sd, s.held);
+  BOOST_TEST(rep.ok());
+  const auto poses = rollkin::link_poses(s.mechanism, sd.kin);
+  BOOST_TEST(poses[2].translation().x() == 3.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(std::abs(poses[2].translation().y()) < 1e-12);
+  // Disk 4's centre: the upper point 5 from (3, 0) and 2 from O_B, about (7.99303, -0.26394).
+  const auto c4 = poses[3].act(rollkin::Vec2<double>(2, 0));
+  BOOST_TEST(c4.x() == 7.99303, boost::test_tools::tolerance(1e-5));
+  BOOST_TEST(c4.y() == -0.26394, boost::test_tools::tolerance(1e-4));
+}
+
+BOOST_AUTO_TEST_CASE(other_examples_load) {
+  const Scene h = load_scene(kExamples + "hypocycloid.json");
+  BOOST_TEST(h.mechanism.contours[0].reversed());  // ring: material outside
+  BOOST_TEST(!h.mechanism.contours[1].reversed());
+  const Scene g = load_scene(kExamples + "elliptical_gears.json");
+  BOOST_TEST(g.mechanism.rolling_pairs.size() == 1u);
+  BOOST_TEST(g.held == std::vector<int>{2}, boost::test_tools::per_element());
+  const Scene c = load_scene(kExamples + "elliptical_gears_cam.json");
+  BOOST_TEST(c.mechanism.rolling_pairs.empty());
+  const Scene o = load_scene(kExamples + "paper_fourbar_osculating.json");
+  BOOST_TEST(o.mechanism.contours[0].reversed());  // material outside the cup
+}
+
+// ---- sweep ------------------------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(sweep_inputs_include_the_end_on_the_grid) {
+  rollkin::io::Sweep s;
+  s.from = 0;
+  s.to = 1;
+  s.step = 0.1;
+  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 11u);
+  s.to = 1.05;
+  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 11u);
+  s.from = 10;
+  s.to = 0;
+  s.step = -2.5;
+  const auto down = rollkin::io::sweep_inputs(s);
+  BOOST_TEST(down.size() == 5u);
+  BOOST_TEST(down.back() == 0.0);
+  s.step = 2.5;
+  BOOST_CHECK_THROW(rollkin::io::sweep_inputs(s), std::invalid_argument);
+  s.step = 0;
+  BOOST_CHECK_THROW(rollkin::io::sweep_inputs(s), std::invalid_argument);
+  s.from = s.to = 3;
+  s.step = 1;
+  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 1u);
+  s.unit = deg_to_rad(1.0);
+  BOOST_TEST(rollkin::io::sweep_inputs(s).front() == deg_to_rad(3.0), boost::test_tools::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(radians_file_keeps_angles) {
+  std::string text = paper_with("\"angle\": \"deg\"", "\"angle\": \"rad\"");
+  const Scene s = load_scene(write_temp("rad.json", text));
+  BOOST_TEST(!s.degrees);
+  BOOST_TEST(s.guess(2) == 180.0);  // taken as radians, as written
+  BOOST_TEST(s.unit_of(2) == 1.0);
+  BOOST_TEST(s.unit_label(2) == "rad");
+  BOOST_TEST(s.unit_label(1) == "m");
+}
+
+// ---- errors -------------------------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(malformed_json_gives_line_and_column) {
+  const std::string msg = error_for("malformed.json", "{\n  \"links\": [\n    {\"name\": \"a\" \"ground\": true}\n  ]\n}\n");
+  BOOST_TEST(contains(msg, "malformed.json:3:"));
+  BOOST_TEST(contains(msg, "malformed JSON"));
+}
+
+BOOST_AUTO_TEST_CASE(unknown_keys_list_the_allowed_ones) {
+  expect_error("top_key.json", paper_with("\"inputs\"", "\"input\""), "input", "allowed keys here");
+  expect_error("contour_key.json", paper_with("\"radius\": 1}", "\"radius\": 1, \"radiuss\": 2}"),
+               "links[2].contours[0].radiuss", "\"radius\", \"arc\"");
+  expect_error("pair_key.json", paper_with("\"variable\": \"theta5\"", "\"variable\": \"theta5\", \"vlaue\": 1"),
+               "pairs[3].vlaue", "\"value\"");
+}
+
+BOOST_AUTO_TEST_CASE(wrong_types) {
+  expect_error("radius_type.json", paper_with("\"radius\": 1}", "\"radius\": \"1\"}"), "links[2].contours[0].radius",
+               "(a number), got a string");
+  expect_error("hold_type.json", paper_with("\"hold\": [true, true]", "\"hold\": [true, 1]"), "pairs[1].hold[1]",
+               "true or false");
+  expect_error("ground_type.json", paper_with("\"ground\": true", "\"ground\": \"yes\""), "links[0].ground",
+               "(true or false), got a string");
+  expect_error("at_type.json", paper_with("\"at\": [{\"x\": 7, \"y\": -2}, {}]", "\"at\": {\"x\": 7, \"y\": -2}"),
+               "pairs[3].at", "(an array), got an object");
+}
+
+BOOST_AUTO_TEST_CASE(unknown_types_list_the_allowed_ones) {
+  expect_error("pair_type.json", paper_with("\"type\": \"rolling\"", "\"type\": \"rollin\""), "pairs[1].type",
+               "\"revolute\", \"prismatic\", \"cam\", \"rolling\"");
+  expect_error("contour_type.json", paper_with("\"type\": \"circle\"", "\"type\": \"cirlce\""),
+               "links[2].contours[0].type", "\"line\", \"circle\", \"parabola\", \"ellipse\", \"samples\", \"bezier\", \"svg\"");
+  expect_error("angle_unit.json", paper_with("\"angle\": \"deg\"", "\"angle\": \"grad\""), "units.angle", "\"deg\" or \"rad\"");
+  expect_error("material.json", paper_with("\"material\": \"inside\"", "\"material\": \"inner\""),
+               "links[1].contours[0].material", "\"left\", \"right\", \"inside\", \"outside\"");
+}
+
+BOOST_AUTO_TEST_CASE(unknown_references_list_existing_names) {
+  expect_error("link_ref.json", paper_with("\"links\": [\"link1\", \"link4\"]", "\"links\": [\"link1\", \"link5\"]"),
+               "pairs[3].links[1]", "existing links: \"link1\", \"link2\", \"link3\", \"link4\"");
+  expect_error("contour_ref.json", paper_with("[\"link3.rim\", \"link4.rim\"]", "[\"link3.rim\", \"link4.rimm\"]"),
+               "pairs[2].contours[1]", "existing contours: \"link2.parabola\", \"link3.rim\", \"link4.rim\"");
+  expect_error("input_ref.json", paper_with("\"inputs\": [\"O_A.theta2\"]", "\"inputs\": [\"O_A.theta\"]"), "inputs[0]",
+               "existing variables: \"O_A.theta2\"");
+  expect_error("sweep_input.json", paper_with("\"input\": \"O_A.theta2\"", "\"input\": \"O_B.theta5\""), "sweep.input",
+               "one of \"O_A.theta2\"");
+}
+
+BOOST_AUTO_TEST_CASE(missing_contour_file) {
+  const std::string msg = error_for("missing_file.json",
+                                    paper_with("{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 1}",
+                                               "{\"name\": \"rim\", \"type\": \"samples\", \"file\": \"../shapes/none.txt\"}"));
+  BOOST_TEST(contains(msg, "missing_file.json"));
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "none.txt"));
+  BOOST_TEST(contains(msg, "cannot open"));
+}
+
+BOOST_AUTO_TEST_CASE(short_and_degenerate_contours) {
+  expect_error("three_samples.json",
+               paper_with("\"type\": \"circle\", \"radius\": 1}",
+                          "\"type\": \"samples\", \"points\": [[1, 0], [0, 1], [-1, 0]], \"closed\": true}"),
+               "links[2].contours[0].points", "at least 4");
+  write_temp("three.txt", "0 0\n1 0\n2 1\n");
+  expect_error("three_samples_file.json",
+               paper_with("\"type\": \"circle\", \"radius\": 1}", "\"type\": \"samples\", \"file\": \"three.txt\"}"),
+               "three.txt", "at least 4");
+  expect_error("zero_range.json", paper_with("\"x_range\": [-2, 2]", "\"x_range\": [1, 1]"), "links[1].contours[0].x_range",
+               "contour too short");
+  expect_error("radius.json", paper_with("\"radius\": 4", "\"radius\": -4"), "links[3].contours[0].radius", "radius > 0");
+  expect_error("bowtie.json",
+               paper_with("\"type\": \"circle\", \"radius\": 1}",
+                          "\"type\": \"samples\", \"points\": [[0, 0], [1, 1], [1, 0], [0, 1]], \"closed\": true}"),
+               "links[2].contours[0]", "invalid sampled contour");
+}
+
+BOOST_AUTO_TEST_CASE(bad_sweeps) {
+  expect_error("step_zero.json", paper_with("\"step\": 1", "\"step\": 0"), "sweep.step", "sign of to - from");
+  expect_error("step_sign.json", paper_with("\"step\": 1", "\"step\": -1"), "sweep.step", "wrong sign");
+}
+
+BOOST_AUTO_TEST_CASE(links_not_connected) {
+  std::string text = paper_with("{\"name\": \"link4\",", "{\"name\": \"link5\"},\n    {\"name\": \"link4\",");
+  expect_error("unconnected.json", text, "pairs", "'link5' is not connected to the ground");
+}
+
+BOOST_AUTO_TEST_CASE(duplicate_names) {
+  expect_error("dup_link.json", paper_with("{\"name\": \"link3\",", "{\"name\": \"link2\","), "links[2].name",
+               "duplicate link name \"link2\"");
+  expect_error("dup_pair.json", paper_with("{\"name\": \"B\",", "{\"name\": \"A\","), "pairs[2].name",
+               "duplicate pair name \"A\"");
+  expect_error("dup_key.json", paper_with("\"radius\": 1}", "\"radius\": 1, \"radius\": 2}"), "links.contours",
+               "duplicate key \"radius\"");
+  expect_error("dup_ground.json", paper_with("{\"name\": \"link2\",", "{\"name\": \"link2\", \"ground\": true,"),
+               "links[1].ground", "exactly one ground link");
+}
+
+// ---- material sides and contact location ------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(material_side_of_closed_samples_follows_their_orientation) {
+  const std::string ccw = "[[1, 0], [0, 1], [-1, 0], [0, -1], [0.7, -0.7]]";
+  const std::string cw = "[[0.7, -0.7], [0, -1], [-1, 0], [0, 1], [1, 0]]";
+  for (const auto& [pts, reversed] : {std::pair{ccw, false}, std::pair{cw, true}}) {
+    const Scene s = load_scene(write_temp("samples_side.json",
+                                          paper_with("\"type\": \"circle\", \"radius\": 1}",
+                                                     "\"type\": \"samples\", \"points\": " + pts + ", \"closed\": true}")));
+    BOOST_TEST(s.mechanism.contours[1].reversed() == reversed);
+  }
+  const Scene p = load_scene(write_temp("parabola_down.json", paper_with("\"a\": 0.5", "\"a\": -0.5")));
+  BOOST_TEST(p.mechanism.contours[0].reversed());  // a < 0: the focus side is the right of x increasing
+}
+
+BOOST_AUTO_TEST_CASE(contact_located_when_values_are_omitted) {
+  std::string text = read_text(kExamples + "elliptical_gears.json");
+  const std::string values = ", \"values\": [0, 180], \"hold\": [true, false]";
+  text.replace(text.find(values), values.size(), "");
+  const Scene s = load_scene(write_temp("gears_no_values.json", text));
+  BOOST_TEST(s.guess(2) == 0.0, boost::test_tools::tolerance(1e-2));
+  BOOST_TEST(std::abs(rollkin::wrap_angle(s.guess(3) - rollkin::pi<double>())) < 1e-2);
+  // A contact pair on the spanning tree cannot be located: "values" required.
+  expect_error("paper_no_values.json", paper_with("\"values\": [0, 180], ", ""), "pairs[1]", "\"values\" required");
+}
