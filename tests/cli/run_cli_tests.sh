@@ -76,7 +76,7 @@ check "solved rows in the wide sweep" $([ "$(grep -c ',ok$' wide.csv)" -gt 150 ]
 check "--plot and --draw write SVG" $(grep -q "<svg" wide.svg && grep -q "<svg" pose.svg; echo $?)
 
 # ---- other examples -----------------------------------------------------------------------------------
-for ex in hypocycloid elliptical_gears elliptical_gears_cam; do
+for ex in hypocycloid elliptical_gears elliptical_gears_cam cycloid; do
   run solve "$EX/$ex.json"
   check "$ex exits 0 with no limits" $([ "$rc" -eq 0 ] && grep -q "no limits met" out.txt; echo $?)
 done
