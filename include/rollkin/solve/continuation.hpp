@@ -1,9 +1,10 @@
 // Continuation along one driver: from the assembled pose, follow the same branch to every requested input
 // value, in both directions when the requested range straddles the assembly input.
 //
-// Each sub-step predicts with the velocity solution (q + qdot h), corrects with Newton at the new input and
-// is accepted only if Newton converged and the correction is small against the prediction (no silent jump
-// to another branch); otherwise the step is halved. When the step falls below min_step the motion ends
+// Each sub-step predicts the pose at the new input (by default a cubic Hermite extrapolation through the
+// last two poses and their velocities), corrects it with Newton and is accepted only if Newton converged
+// and the result lies close to the tangent prediction q + qdot h compared with the tangent step itself (no
+// silent jump to another branch); otherwise the step is halved. When the step falls below min_step the motion ends
 // there: a dead point if the unknowns' Jacobian has become ill-conditioned (the limit then lies within
 // about 2 min_step of the last pose), otherwise no convergence. After every accepted step, contact
 // parameters on open contours are checked against their domains; an exit is located by bisection.
@@ -16,11 +17,19 @@
 
 namespace rollkin {
 
+/// How the next pose is predicted before Newton corrects it.
+enum class Predictor {
+  Previous,  // the last pose itself (zero order), kept for comparison in the benchmark
+  Tangent,   // q + qdot h, the velocity solution (first order)
+  Hermite    // cubic through the last two poses and their velocities (third order), tangent at the start
+};
+
 template <class S> struct ContinuationSettings {
   S max_step = pi<S>() / S(36);      // largest sub-step of the driver (5 degrees for angles)
   S min_step = S(1) / S(1000000000); // 1e-9: limits are located to about 2e-9 in the driver
   S max_correction_ratio = S(1) / S(2);
-  S ill_conditioned = S(1000);       // condition growth (vs assembly) that marks a dead point
+  S ill_conditioned = S(100);        // condition growth (vs the sweep's start) that marks a dead point
+  Predictor predictor = Predictor::Hermite;
 };
 
 template <class S> struct SweepPose {
@@ -42,12 +51,6 @@ template <class S> struct SweepResult {
 
 namespace detail {
 
-template <class S> VectorX<S> unit_driver_rate(const Mechanism<S>& m, int driver) {
-  VectorX<S> r = VectorX<S>::Zero(m.drivers.size());
-  r(driver) = S(1);
-  return r;
-}
-
 /// First contact variable outside its open contour's domain, or -1.
 template <class S> int domain_violation(const Mechanism<S>& m, const VectorX<S>& q) {
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
@@ -61,47 +64,96 @@ template <class S> int domain_violation(const Mechanism<S>& m, const VectorX<S>&
   return -1;
 }
 
+/// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
+/// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
  public:
-  Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, S base_condition)
-      : m_(m), sd_(sd), driver_(driver), var_(m.drivers[driver]), cfg_(cfg), base_condition_(base_condition) {}
-
-  /// One corrector at input t = q0(var) + h from (q0, v0); true (and q set) if accepted.
-  bool try_step(const VectorX<S>& q0, const VectorX<S>& v0, const S& t, VectorX<S>& q, SolveReport<S>& rep) {
-    q = q0 + v0 * (t - q0(var_));
-    q(var_) = t;
-    const VectorX<S> predicted = q;
-    rep = solve_position(m_, q, sd_);
-    if (!rep.ok()) return false;
-    const S correction = scaled_distance(q, predicted);
-    const S prediction = scaled_distance(predicted, q0);
-    return correction <= cfg_.max_correction_ratio * prediction + sd_.settings.step_tolerance;
+  Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
+      : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())) {
+    rate_(driver) = S(1);
+    start_ = solve_position(m_, q_, sd_);
+    solve_velocity(m_, sd_, rate_, v_);
+    base_condition_ = start_.condition;
   }
 
-  /// Advances (q, v) at input q(var) to `target`. Returns Converged, or the limit met (q at the last pose).
-  SolveReport<S> advance(VectorX<S>& q, VectorX<S>& v, const S& target) {
+  const SolveReport<S>& start() const { return start_; }
+  const VectorX<S>& q() const { return q_; }
+  const VectorX<S>& v() const { return v_; }
+
+  /// Advances to the driver value `target`. Returns Converged (iterations summed over the sub-steps), or the
+  /// limit met, with the state left at the last pose reached.
+  SolveReport<S> advance(const S& target) {
     using std::abs;
-    S h = clamp_step(target - q(var_));
-    VectorX<S> trial(q.size());
-    SolveReport<S> rep;
-    if (q(var_) == target) rep = solve_position(m_, q, sd_);
-    while (q(var_) != target) {
-      const S t = abs(target - q(var_)) <= abs(h) ? target : S(q(var_) + h);
-      if (try_step(q, v, t, trial, rep)) {
-        const int out = domain_violation(m_, trial);
-        if (out >= 0) return locate_domain_exit(q, v, h, out);
-        q = trial;
-        v = solve_velocity(m_, sd_, unit_driver_rate(m_, driver_));
-        h = clamp_step(target - q(var_), S(abs(h) * S(2)));
+    S h = clamp_step(target - q_(var_));
+    SolveReport<S> rep = start_;
+    int iterations = 0;
+    while (q_(var_) != target) {
+      // Go to the target when it is within the step or would leave a sliver behind.
+      const S t = abs(target - q_(var_)) <= abs(h) * (S(1) + S(1) / S(64)) ? target : S(q_(var_) + h);
+      const bool accepted = try_step(t, rep);
+      iterations += rep.iterations + 1;
+      if (accepted) {
+        const int out = domain_violation(m_, trial_);
+        if (out >= 0) return locate_domain_exit(t, out);
+        accept();
+        h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
         continue;
       }
       h /= S(2);
-      if (abs(h) < cfg_.min_step) return classify_stop(q, rep);
+      if (abs(h) < cfg_.min_step) return classify_stop(rep);
     }
+    rep.iterations = iterations;
     return rep;
   }
 
  private:
+  /// Predicts trial_ at driver value t, corrects it with Newton; accepted if converged and the correction is
+  /// small against the tangent step (a larger one means Newton went to another branch).
+  bool try_step(const S& t, SolveReport<S>& rep) {
+    const S h = t - q_(var_);
+    tangent_ = q_ + v_ * h;
+    tangent_(var_) = t;
+    predict(t, h);
+    rep = solve_position(m_, trial_, sd_);
+    if (!rep.ok()) return false;
+    return scaled_distance(trial_, tangent_) <= cfg_.max_correction_ratio * scaled_distance(tangent_, q_) +
+                                                    sd_.settings.step_tolerance;
+  }
+
+  void predict(const S& t, const S& h) {
+    switch (cfg_.predictor) {
+      case Predictor::Previous: trial_ = q_; break;
+      case Predictor::Tangent: trial_ = tangent_; break;
+      case Predictor::Hermite: {
+        // Cubic Hermite on [t_prev, t_now] evaluated at s = (t - t_prev)/dt, an extrapolation (s > 1) that is
+        // trusted up to s = 3 (a step at most twice the last one); beyond that, the tangent.
+        using std::abs;
+        const S dt = q_(var_) - q_prev_(var_);
+        if (!has_prev_ || abs(h) > S(2) * abs(dt)) {
+          trial_ = tangent_;
+          break;
+        }
+        {
+          const S s = (t - q_prev_(var_)) / dt, s2 = s * s, s3 = s2 * s;
+          const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
+          const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
+          trial_ = h00 * q_prev_ + (h10 * dt) * v_prev_ + h01 * q_ + (h11 * dt) * v_;
+        }
+        break;
+      }
+    }
+    trial_(var_) = t;
+  }
+
+  void accept() {
+    q_prev_.swap(q_);
+    v_prev_.swap(v_);
+    q_.swap(trial_);
+    has_prev_ = true;
+    solve_velocity(m_, sd_, rate_, v_);  // sd is factored at the accepted pose
+  }
+
   S clamp_step(const S& remaining, const S& preferred = std::numeric_limits<S>::infinity()) const {
     using std::abs;
     using std::min;
@@ -117,58 +169,56 @@ template <class S> class Tracer {
     return d;
   }
 
-  SolveReport<S> classify_stop(const VectorX<S>& q, const SolveReport<S>& failed) {
-    VectorX<S> at = q;
-    SolveReport<S> rep = solve_position(m_, at, sd_);  // refactor at the last accepted pose
-    rep.limit_input = q(var_);
+  /// The step collapsed at the current pose: a dead point if the Jacobian of the unknowns has become
+  /// ill-conditioned (condition grown by ill_conditioned over the sweep's start), else no convergence.
+  SolveReport<S> classify_stop(const SolveReport<S>& failed) {
+    trial_ = q_;
+    SolveReport<S> rep = solve_position(m_, trial_, sd_);  // refactor at the last accepted pose
+    rep.limit_input = q_(var_);
+    std::ostringstream os;
     if (rep.condition > cfg_.ill_conditioned * base_condition_ || rep.rank < rep.unknowns) {
       rep.status = SolveStatus::DeadPoint;
-      std::ostringstream os;
-      os << "dead point (motion limit): the mechanism cannot move past " << m_.variables[var_].name
-         << " = " << to_double(q(var_)) << " (Jacobian singular there, condition " << to_double(rep.condition) << ")";
-      rep.detail = os.str();
+      os << "dead point (motion limit): the mechanism cannot move past " << m_.variables[var_].name << " = "
+         << to_double(q_(var_)) << " (Jacobian singular there, condition " << to_double(rep.condition) << ")";
     } else {
       rep.status = failed.status == SolveStatus::CannotAssemble ? SolveStatus::CannotAssemble : SolveStatus::NoConvergence;
-      std::ostringstream os;
-      os << "no convergence beyond " << m_.variables[var_].name << " = " << to_double(q(var_));
-      rep.detail = os.str();
+      os << "no convergence beyond " << m_.variables[var_].name << " = " << to_double(q_(var_));
     }
+    rep.detail = os.str();
     return rep;
   }
 
-  /// The contact variable `out` leaves its domain between q's input and q's input + h: bisect on h.
-  SolveReport<S> locate_domain_exit(VectorX<S>& q, VectorX<S>& v, S h, int out) {
+  /// Contact variable `out` leaves its domain before driver value t: bisect between the current pose and t.
+  SolveReport<S> locate_domain_exit(S t, int out) {
     using std::abs;
-    VectorX<S> trial(q.size());
     SolveReport<S> rep;
-    while (abs(h) > cfg_.min_step) {
-      const S half = h / S(2);
-      if (try_step(q, v, S(q(var_) + half), trial, rep) && domain_violation(m_, trial) < 0) {
-        q = trial;
-        v = solve_velocity(m_, sd_, unit_driver_rate(m_, driver_));
-      }
-      h = half;
+    while (abs(t - q_(var_)) > cfg_.min_step) {
+      const S mid = (q_(var_) + t) / S(2);
+      if (try_step(mid, rep) && domain_violation(m_, trial_) < 0) accept();
+      else t = mid;
     }
-    VectorX<S> at = q;
-    rep = solve_position(m_, at, sd_);
+    trial_ = q_;
+    rep = solve_position(m_, trial_, sd_);
     rep.status = SolveStatus::DomainExit;
-    rep.limit_input = q(var_);
+    rep.limit_input = q_(var_);
     const Pair<S>& p = m_.pairs[m_.variables[out].pair];
-    const bool on_a = out == p.first_variable;
     rep.pair = m_.variables[out].pair;
-    rep.contour = on_a ? p.contour_a : p.contour_b;
+    rep.contour = out == p.first_variable ? p.contour_a : p.contour_b;
     std::ostringstream os;
     os << "contact of pair '" << p.name << "' leaves contour '" << m_.contours[rep.contour].name() << "' ("
        << m_.variables[out].name << " reaches the end of its domain) at " << m_.variables[var_].name << " = "
-       << to_double(q(var_));
+       << to_double(q_(var_));
     rep.detail = os.str();
     return rep;
   }
 
   const Mechanism<S>& m_;
   SolveData<S>& sd_;
-  int driver_, var_;
+  int var_;
   const ContinuationSettings<S>& cfg_;
+  VectorX<S> q_, q_prev_, trial_, tangent_, v_, v_prev_, rate_;
+  bool has_prev_ = false;
+  SolveReport<S> start_;
   S base_condition_;
 };
 
@@ -196,13 +246,11 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
   std::sort(down.begin(), down.end(), [&](auto a, auto b) { return inputs[a] > inputs[b]; });
 
   for (const auto* side : {&up, &down}) {
-    VectorX<S> q = q0;
-    SolveReport<S> rep = solve_position(m, q, sd);
-    VectorX<S> v = solve_velocity(m, sd, detail::unit_driver_rate(m, driver));
-    detail::Tracer<S> tracer(m, sd, driver, cfg, rep.condition);
+    if (side->empty()) continue;
+    detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
       SweepPose<S>& pose = out.poses[(*side)[k]];
-      rep = tracer.advance(q, v, pose.input);
+      const SolveReport<S> rep = tracer.advance(pose.input);
       if (!rep.ok()) {  // this input and all beyond it on this side are past the limit
         out.limits.push_back(rep);
         for (std::size_t rest = k; rest < side->size(); ++rest) {
@@ -211,8 +259,8 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
         }
         break;
       }
-      pose.q = q;
-      pose.qdot = v;
+      pose.q = tracer.q();
+      pose.qdot = tracer.v();
       pose.report = rep;
     }
   }

@@ -2,13 +2,14 @@
 //
 // Newton-Raphson on the constraints (eqs. 6 and 3) in the unknowns (all pair variables but the drivers),
 // with the analytic Jacobian of kinematics.hpp. Rows and columns are scaled (lengths by the mechanism's
-// length scale) and every step is the minimum-norm least-squares solution from a rank-revealing complete
-// orthogonal decomposition, so redundant but consistent constraints (more equations than rank) converge
-// quadratically and inconsistent ones are reported as CannotAssemble.
+// length scale). Redundant constraints (more equations than rank) take minimum-norm least-squares steps
+// from a rank-revealing decomposition, so consistent ones converge quadratically and inconsistent ones are
+// reported as CannotAssemble.
 #pragma once
 
 #include "rollkin/kinematics.hpp"
 #include "rollkin/solve/report.hpp"
+#include "rollkin/solve/small_lu.hpp"
 
 #include <Eigen/QR>
 
@@ -25,13 +26,23 @@ template <class S> struct NewtonSettings {
 };
 
 /// Solve workspace: buffers sized once per mechanism; a solve does not allocate per Newton step.
+///
+/// Factorisation: a square system whose LU is well conditioned is solved by partial-pivot LU (SmallLU, many
+/// times cheaper than QR at the sizes of planar mechanisms); a non-square system (redundant constraints)
+/// or a numerically singular one by the rank-revealing complete orthogonal decomposition, whose solve is the
+/// minimum-norm least-squares step.
 template <class S> struct SolveData {
   KinematicsData<S> kin;
   VectorX<S> row_scale, col_scale;       // residual and variable scales
   MatrixX<S> ju;                         // scaled Jacobian of the unknowns
   VectorX<S> rhs, step;                  // scaled
+  SmallLU<S> lu;
   Eigen::CompleteOrthogonalDecomposition<MatrixX<S>> cod;
   NewtonSettings<S> settings;
+  // State of the current factorisation.
+  bool lu_active = false;
+  int rank = 0;
+  S condition = S(0);
 
   explicit SolveData(const Mechanism<S>& m)
       : kin(m),
@@ -40,6 +51,7 @@ template <class S> struct SolveData {
         ju(m.equation_count(), m.unknowns.size()),
         rhs(m.equation_count()),
         step(m.unknowns.size()),
+        lu(m.unknowns.size()),
         cod(m.equation_count(), m.unknowns.size()) {
     int row = 0;
     for (std::size_t l = 0; l < m.loops.size(); ++l, row += 3) {
@@ -49,6 +61,42 @@ template <class S> struct SolveData {
     }
     for (; row < m.equation_count(); ++row) row_scale(row) = m.length_scale;
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) col_scale(c) = m.variable_scale(m.unknowns[c]);
+  }
+
+  /// Factors the first `rows` rows of ju, choosing LU or COD as described above. The condition estimate is
+  /// the pivot ratio of the triangular factor (max |u_ii| / min |u_ii| for LU, |r_11| / |r_nn| for the
+  /// column-pivoted QR inside COD): cheap, and it grows like 1/sigma_min toward a singular pose.
+  void factor(int rows) {
+    using std::abs;
+    using std::max;
+    using std::min;
+    const auto n = ju.cols();
+    if (rows == n && n > 0) {
+      const bool nonzero_pivots = lu.compute(ju.topRows(rows));
+      const auto& u = lu.matrixLU();
+      S largest = abs(u(0, 0)), smallest = largest;
+      for (Eigen::Index i = 1; i < n; ++i) {
+        largest = max(largest, S(abs(u(i, i))));
+        smallest = min(smallest, S(abs(u(i, i))));
+      }
+      if (nonzero_pivots && smallest > largest * epsilon<S>() * S(static_cast<int>(n))) {
+        lu_active = true;
+        rank = static_cast<int>(n);
+        condition = largest / smallest;
+        return;
+      }
+    }
+    lu_active = false;
+    if (rows == ju.rows()) cod.compute(ju);
+    else cod.compute(ju.topRows(rows));
+    rank = static_cast<int>(cod.rank());
+    condition = rank < n || rank == 0 ? std::numeric_limits<S>::infinity()
+                                      : S(abs(cod.matrixQTZ()(0, 0)) / abs(cod.matrixQTZ()(n - 1, n - 1)));
+  }
+  /// x = J^-1 b (LU) or the minimum-norm least-squares solution (COD), in the scaled variables.
+  template <class B> void solve(const B& b, VectorX<S>& x) const {
+    if (lu_active) lu.solve(b, x);
+    else x.noalias() = cod.solve(b);
   }
 };
 
@@ -68,19 +116,7 @@ template <class S> void evaluate_and_factor(const Mechanism<S>& m, const VectorX
   const auto n = static_cast<Eigen::Index>(m.unknowns.size());
   for (Eigen::Index c = 0; c < n; ++c)
     sd.ju.col(c) = sd.kin.jacobian.col(m.unknowns[c]).cwiseQuotient(sd.row_scale) * sd.col_scale(c);
-  if (rows == m.equation_count()) sd.cod.compute(sd.ju);
-  else sd.cod.compute(sd.ju.topRows(rows));
-}
-
-/// Condition estimate from the triangular factor: |r_11| / |r_kk| over the numerical rank k.
-template <class S> S condition_estimate(const SolveData<S>& sd) {
-  using std::abs;
-  const Eigen::Index k = sd.cod.rank();
-  if (k == 0) return std::numeric_limits<S>::infinity();
-  const auto& r = sd.cod.matrixQTZ();
-  const S smallest = abs(r(k - 1, k - 1));
-  const S full = sd.cod.cols() > k ? std::numeric_limits<S>::infinity() : abs(r(0, 0)) / smallest;
-  return full;
+  sd.factor(rows);
 }
 
 /// Newton-Raphson at fixed driver values (taken from q). Uses the first `rows` equations (all by default).
@@ -96,8 +132,8 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     evaluate_and_factor(m, q, sd, rows);
     rep.iterations = it;
     rep.residual = scaled_max_norm<S>(sd.kin.residual.head(rows), sd.row_scale.head(rows));
-    rep.rank = static_cast<int>(sd.cod.rank());
-    rep.condition = condition_estimate(sd);
+    rep.rank = sd.rank;
+    rep.condition = sd.condition;
     const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
     if (rep.residual <= cfg.residual_tolerance || settled) {
       rep.status = rep.rank < rep.unknowns ? SolveStatus::Underdetermined : SolveStatus::Converged;
@@ -105,32 +141,32 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     }
     if (it == cfg.max_iterations) break;
     sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseQuotient(sd.row_scale.head(rows));
-    sd.step = sd.cod.solve(sd.rhs.head(rows));
-    using std::abs;
+    sd.solve(sd.rhs.head(rows), sd.step);
     last_step = sd.step.cwiseAbs().maxCoeff();
     if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += sd.step(c) * sd.col_scale(c);
-    if (last_step <= epsilon<S>() * S(16) && rep.residual > cfg.consistency_tolerance) {
-      rep.status = SolveStatus::CannotAssemble;  // least-squares stationary with a residual left
-      rep.detail = "the constraints cannot all be met: least-squares residual stays above tolerance";
-      return rep;
-    }
+    if (last_step <= epsilon<S>() * S(16) && rep.residual > cfg.consistency_tolerance) break;  // stationary
   }
-  rep.status = rep.residual > cfg.consistency_tolerance && last_step <= cfg.step_tolerance ? SolveStatus::CannotAssemble
-                                                                                         : SolveStatus::NoConvergence;
-  rep.detail = rep.status == SolveStatus::CannotAssemble
-                   ? "the constraints cannot all be met: least-squares residual stays above tolerance"
-                   : "Newton-Raphson did not converge";
+  const bool stationary = last_step <= cfg.step_tolerance && rep.residual > cfg.consistency_tolerance;
+  rep.status = stationary ? SolveStatus::CannotAssemble : SolveStatus::NoConvergence;
+  rep.detail = stationary ? "the constraints cannot all be met: least-squares residual stays above tolerance"
+                          : "Newton-Raphson did not converge";
   return rep;
 }
 
-/// Rates of all variables per unit rate of the drivers: J_u qdot_u = -J_d qdot_d (sd factored at the pose).
-template <class S> VectorX<S> solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& driver_rates) {
-  VectorX<S> qdot = VectorX<S>::Zero(m.variable_count());
+/// Rates of all variables for the given driver rates: J_u qdot_u = -J_d qdot_d (sd factored at the pose).
+template <class S> void solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& driver_rates,
+                                       VectorX<S>& qdot) {
+  qdot.setZero(m.variable_count());
   for (std::size_t k = 0; k < m.drivers.size(); ++k) qdot(m.drivers[k]) = driver_rates(k);
-  sd.rhs = -(sd.kin.jacobian * qdot).cwiseQuotient(sd.row_scale);
-  sd.step = sd.cod.solve(sd.rhs);
+  sd.rhs.noalias() = sd.kin.jacobian * qdot;
+  sd.rhs = -sd.rhs.cwiseQuotient(sd.row_scale);
+  sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
+}
+template <class S> VectorX<S> solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& driver_rates) {
+  VectorX<S> qdot;
+  solve_velocity(m, sd, driver_rates, qdot);
   return qdot;
 }
 
@@ -142,7 +178,7 @@ template <class S> VectorX<S> solve_acceleration(const Mechanism<S>& m, const Ve
   evaluate_pairs(m, q, &qdot, 3, sd.kin);
   compute_bias(m, qdot, sd.kin);
   sd.rhs = -(sd.kin.jacobian * qdd + sd.kin.bias).cwiseQuotient(sd.row_scale);
-  sd.step = sd.cod.solve(sd.rhs);
+  sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdd(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
   return qdd;
 }
