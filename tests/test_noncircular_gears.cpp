@@ -17,6 +17,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "discretised.hpp"
+#include "rollkin/geometry/validation.hpp"
 #include "rollkin/synthesis.hpp"
 
 #include <iomanip>
@@ -124,6 +125,24 @@ std::vector<double> table(const std::string& title, const std::function<GearRun(
 std::vector<double> turn_and_more() { return degrees<double>(-40, 400, 10); }
 
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(shipped_shape_files_are_valid_contours) {
+  // Every closed file of shapes/ is a simple counter-clockwise polygon (material inside, on the left), every
+  // open one a simple polyline: CGAL's exact predicates, independent of the spline code.
+  using namespace rollkin::geometry;
+  std::vector<std::pair<std::string, bool>> files;
+  for (int k = 0; k < 7; ++k) files.emplace_back(shape_file("parabola", 24 * (1 << k) + 1), false);
+  for (int k = 0; k < 7; ++k) files.emplace_back(shape_file("circle", 16 * (1 << k)), true);
+  for (int n : kCounts)
+    for (const char* stem : {"ellipse", "noncircular_gear1", "noncircular_gear2"}) files.emplace_back(shape_file(stem, n), true);
+  for (const auto& [name, closed] : files) {
+    const auto pts = read_point_file(shape_path(name), 3);
+    const ValidationReport rep = validate_polyline(pts, closed, MaterialSide::Left, 1e-9);
+    BOOST_TEST(!rep.has_errors(), name);
+    BOOST_TEST(rep.issues.empty(), name);
+    if (closed) BOOST_TEST(rep.signed_area > 0, name);
+  }
+}
 
 BOOST_AUTO_TEST_CASE(synthesis_reproduces_the_closed_form_and_the_shipped_files) {
   const auto t = TransmissionFunction<double>::sinusoidal(kGear);
