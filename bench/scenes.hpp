@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mechanisms.hpp"  // tests/mechanisms.hpp: paper_fourbar, elliptical_gears, assemble_fixture
+#include "rollkin/synthesis.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -122,7 +123,7 @@ inline std::vector<Vec2d> ellipse_samples(double a, double b, std::size_t n) {
   return q;
 }
 
-// ---- a non-circular gear pair synthesised from a transmission function ----------------------------------
+// ---- a non-circular gear pair synthesised from a transmission function (synthesis.hpp) -------------------
 // phi2 = -f(phi1), f(p) = p + k sin p (one turn of gear 2 per turn of gear 1), centre distance E:
 // pitch radii r1 = E f'/(1 + f'), r2 = E/(1 + f') (method.md section 5). The contact lies on the line of
 // centres: gear 1's pitch point of body polar angle -p (radius r1(p)) touches gear 2's point of body polar
@@ -135,23 +136,9 @@ struct NonCircularGears {
   double r1(double p) const { return E * df(p) / (1 + df(p)); }
   double r2(double p) const { return E / (1 + df(p)); }
 
-  /// Gear 1's pitch curve, counter-clockwise (material on the left): body polar angle beta = -p.
-  std::vector<Vec2d> samples1(std::size_t n) const {
-    std::vector<Vec2d> q(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const double beta = 2 * pi<double>() * static_cast<double>(j) / static_cast<double>(n);
-      q[j] = r1(-beta) * Vec2d(std::cos(beta), std::sin(beta));
-    }
-    return q;
-  }
-  /// Gear 2's pitch curve: polar angle pi + f(p), increasing with p (counter-clockwise).
-  std::vector<Vec2d> samples2(std::size_t n) const {
-    std::vector<Vec2d> q(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const double p = 2 * pi<double>() * static_cast<double>(j) / static_cast<double>(n);
-      q[j] = r2(p) * Vec2d(std::cos(pi<double>() + f(p)), std::sin(pi<double>() + f(p)));
-    }
-    return q;
+  /// Pitch curves of n samples each from synthesis.hpp (equal body polar angles, counter-clockwise).
+  GearPair<double> pitch_curves(std::size_t n) const {
+    return synthesise_gear_pair(TransmissionFunction<double>::sinusoidal(k), E, n, n);
   }
 
   /// Pivots E apart; contact pair (rolling or cam) between the two pitch curves. Variables: phi1, u, v, phi2.
