@@ -411,7 +411,7 @@ std::vector<Case> make_cases(bool quick) {
     Case c;
     c.name = "paper: sampled parabola " + count_tag(n);
     c.group = "sampled parabola (spline)";
-    c.tag = count_tag(n);
+    c.tag = "P" + count_tag(n);
     c.scene = "paper";
     c.points = n;
     c.target = n == 1000 ? "sampled1e3" : (n == 100000 ? "sampled1e5" : "");
@@ -433,7 +433,7 @@ std::vector<Case> make_cases(bool quick) {
     Case c;
     c.name = kind + ": analytic";
     c.group = rolling ? "ellipse gears, analytic" : "ellipse cam, analytic";
-    c.tag = rolling ? "gears" : "cam";
+    c.tag = rolling ? "EG analytic" : "EC analytic";
     c.scene = scene;
     c.profiles = [ga, gb](const Samples&) { return std::vector<Shape>{Ellipse<double>(ga, gb), Ellipse<double>(ga, gb)}; };
     c.mechanism = [=](const std::vector<Shape>& s) { return gear_scene(s[0], s[1], ga, ge, rolling, start); };
@@ -444,7 +444,7 @@ std::vector<Case> make_cases(bool quick) {
       Case d = c;
       d.name = kind + ": sampled " + count_tag(n);
       d.group = rolling ? "ellipse gears, sampled" : "ellipse cam, sampled";
-      d.tag = count_tag(n);
+      d.tag = (rolling ? "EG" : "EC") + count_tag(n);
       d.points = n;
       d.samples = [=] { return Samples{ellipse_samples(ga, gb, static_cast<std::size_t>(n))}; };
       d.profiles = [](const Samples& s) {
@@ -466,7 +466,7 @@ std::vector<Case> make_cases(bool quick) {
       const std::string kind = rolling ? "non-circular gears" : "non-circular cam pair";
       c.name = kind + ": sampled " + count_tag(n);
       c.group = rolling ? "non-circular gears, sampled" : "non-circular cam, sampled";
-      c.tag = count_tag(n);
+      c.tag = (rolling ? "NG" : "NC") + count_tag(n);
       c.scene = rolling ? "noncircular" : "noncircular_cam";
       c.points = n;
       c.samples = [n] {
@@ -729,7 +729,8 @@ void write_csv(const std::string& path, const std::vector<Row>& rows, const std:
       << d(r.evals_pose) << ',' << d(r.max_err) << ',' << r.solved << ',' << r.total << ',' << r.target << ','
       << io::csv_field(r.verdict) << ',' << io::csv_field(r.note) << ",,,,,\n";
   for (const Saving& s : savings)
-    o << "saving," << io::csv_field(s.what) << ",,,,,,,,,,,,,,,,,," << io::csv_field(s.note) << ','
+    o << "saving," << io::csv_field(s.what) << ",," << io::csv_field(s.alt_name) << std::string(16, ',')
+      << io::csv_field(s.note) << ','
       << io::csv_field(s.base_name) << ',' << d(s.base) << ',' << d(s.alt) << ',' << io::csv_field(s.unit) << ','
       << d(s.ratio()) << '\n';
   io::write_file_atomic(path, o.str());
@@ -824,8 +825,9 @@ int main(int argc, char** argv) {
   Eigen::setNbThreads(1);
 
   Bench bench(opt);
-  std::printf("rollkin_bench%s: %ld CPUs, %s; %s; %d timed sweeps per case (median), 1 thread\n",
-              opt.quick ? " --quick" : "", cpu_count(), cpu_model().c_str(), compiler().c_str(), bench.repeats());
+  std::printf("rollkin_bench%s: %ld CPUs, %s; %s; %d timed sweeps per case (median), 1 thread; load average %s\n",
+              opt.quick ? " --quick" : "", cpu_count(), cpu_model().c_str(), compiler().c_str(), bench.repeats(),
+              load_average().c_str());
   Bench::print_header();
   std::vector<Row> rows;
   for (const Case& c : make_cases(opt.quick)) {

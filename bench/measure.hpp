@@ -71,6 +71,14 @@ inline std::string cpu_model() {
   return "unknown";
 }
 
+/// The first three fields of /proc/loadavg (other work on a shared machine skews the timings).
+inline std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
 inline long cpu_count() { return sysconf(_SC_NPROCESSORS_ONLN); }
 
 inline std::string compiler() {
