@@ -504,3 +504,22 @@ BOOST_AUTO_TEST_CASE(replace_is_complete_and_failed_rename_keeps_target) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(charts_nested_in_one_document_clip_to_their_own_plot_area) {
+  // Two charts stacked in one SVG (as the CLI's --plot does) must not share a clip-path id, or the second
+  // chart's data would be clipped to the first chart's plot rectangle.
+  auto clip_id = [](const std::string& svg) {
+    const auto at = svg.find("clipPath id=\"");
+    BOOST_TEST_REQUIRE(at != std::string::npos);
+    const auto begin = at + 13;
+    return svg.substr(begin, svg.find('"', begin) - begin);
+  };
+  SvgChart a, b;
+  a.set_title("angles");
+  b.set_title("lengths");
+  a.add_series("s", {0.0, 1.0}, {0.0, 1.0});
+  b.add_series("s", {0.0, 1.0}, {0.0, 1.0});
+  const std::string sa = a.to_svg(), sb = b.to_svg();
+  BOOST_TEST(clip_id(sa) != clip_id(sb));
+  BOOST_TEST(sb.find("url(#" + clip_id(sb) + ")") != std::string::npos);
+}

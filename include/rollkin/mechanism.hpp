@@ -49,6 +49,7 @@ template <class S> class Mechanism {
   std::vector<int> unknowns;        // indices into q that are not drivers
   std::vector<int> rolling_pairs;   // pairs with an arc-length row
   S length_scale = S(1);            // characteristic size, for scaling lengths in norms
+  S representation_error = S(0);    // largest Contour::representation_error (0 for exact contours)
 
   int variable_count() const { return static_cast<int>(variables.size()); }
   int equation_count() const { return 3 * static_cast<int>(loops.size()) + static_cast<int>(rolling_pairs.size()); }
@@ -79,6 +80,7 @@ template <class S> class Mechanism {
     m.unknowns = unknowns;
     m.rolling_pairs = rolling_pairs;
     m.length_scale = scalar_cast<T>(length_scale);
+    m.representation_error = scalar_cast<T>(representation_error);
     return m;
   }
 
@@ -100,6 +102,11 @@ template <class S> void Mechanism<S>::finalize() {
   number_variables();
   build_tree_and_loops();
   estimate_length_scale();
+  representation_error = S(0);
+  for (const auto& c : contours) {
+    using std::max;
+    representation_error = max(representation_error, c.representation_error());
+  }
 }
 
 template <class S> void Mechanism<S>::number_variables() {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -305,10 +306,12 @@ std::string SvgChart::to_svg() const {
   auto X = [&](double x) { return left + (x - xt.lo) / (xt.hi - xt.lo) * pw; };
   auto Y = [&](double y) { return top + ph - (y - yt.lo) / (yt.hi - yt.lo) * ph; };
 
+  // The clip id must be unique in a document that nests several charts: derive it from the title.
+  const std::string clip_id = "plot-area-" + std::to_string(std::hash<std::string>{}(title_) % 1000000007u);
   std::ostringstream o;
   o << svg_open(width_, height_);
   o << "<title>" << xml_escape(title_.empty() ? "chart" : title_) << "</title>\n";
-  o << "<defs><clipPath id=\"plot-area\"><rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(pw)
+  o << "<defs><clipPath id=\"" << clip_id << "\"><rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(pw)
     << "\" height=\"" << px(ph) << "\"/></clipPath></defs>\n";
   o << "<rect x=\"0\" y=\"0\" width=\"" << width_ << "\" height=\"" << height_ << "\" fill=\"#ffffff\"/>\n";
 
@@ -353,7 +356,7 @@ std::string SvgChart::to_svg() const {
   }
 
   // Series, clipped to the plot area.
-  o << "<g class=\"data\" clip-path=\"url(#plot-area)\">\n";
+  o << "<g class=\"data\" clip-path=\"url(#" << clip_id << ")\">\n";
   for (std::size_t k = 0; k < series_.size(); ++k) {
     const auto& s = series_[k];
     const std::string color = s.color.empty() ? palette_color(k) : s.color;

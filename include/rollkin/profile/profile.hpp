@@ -66,6 +66,28 @@ template <class S> class Contour {
     return -visit([&](const auto& p) { return p.param_at_arc_length(S(-u0), S(-ds)); });
   }
 
+  /// How far the profile may lie from the contour it stands for: zero for analytic and Bezier profiles (exact
+  /// by definition); for a cubic spline through samples the interpolation error estimated from the jumps of
+  /// the third derivative at the knots, e ~ (5/384) h^4 |p^(4)| ~ (5/384) h^3 |jump p^(3)|, plus the
+  /// smoothing deviation.
+  S representation_error() const {
+    using std::max;
+    const auto* spline = std::get_if<SampledProfile<S>>(&shape_);
+    if (spline == nullptr) return S(0);
+    const std::size_t n = spline->span_count();
+    S worst(0);
+    Vec2<S> previous = spline->jet(mid_span(*spline, 0), 3).d3;
+    for (std::size_t k = 1; k <= n; ++k) {
+      if (k == n && !domain().closed) break;
+      const std::size_t span = k % n;
+      const Vec2<S> d3 = spline->jet(mid_span(*spline, span), 3).d3;
+      const S h = spline->knot(span + 1) - spline->knot(span);
+      worst = max(worst, S(S(5) / S(384) * h * h * h * (d3 - previous).norm()));
+      previous = d3;
+    }
+    return worst + spline->max_deviation();
+  }
+
   template <class T> Contour<T> cast() const {
     ProfileShape<T> shape = std::visit([](const auto& p) -> ProfileShape<T> { return p.template cast<T>(); }, shape_);
     return Contour<T>(name_, link_, std::move(shape), placement_.template cast<T>(), reversed_);
@@ -73,6 +95,7 @@ template <class S> class Contour {
 
  private:
   template <class F> auto visit(F&& f) const { return std::visit(std::forward<F>(f), shape_); }
+  static S mid_span(const SampledProfile<S>& p, std::size_t k) { return (p.knot(k) + p.knot(k + 1)) / S(2); }
 
   std::string name_;
   int link_;

@@ -170,13 +170,16 @@ template <class S> class Tracer {
   }
 
   /// The step collapsed at the current pose: a dead point if the Jacobian of the unknowns has become
-  /// ill-conditioned (condition grown by ill_conditioned over the sweep's start), else no convergence.
+  /// ill-conditioned (condition grown by ill_conditioned over the sweep's start, or above eps^-1/3), else
+  /// no convergence.
   SolveReport<S> classify_stop(const SolveReport<S>& failed) {
     trial_ = q_;
     SolveReport<S> rep = solve_position(m_, trial_, sd_);  // refactor at the last accepted pose
     rep.limit_input = q_(var_);
     std::ostringstream os;
-    if (rep.condition > cfg_.ill_conditioned * base_condition_ || rep.rank < rep.unknowns) {
+    // Ill-conditioned against the sweep's start or, when the sweep started next to the limit, outright.
+    const S outright = S(1) / tolerance<S>(S(1) / S(3));
+    if (rep.condition > cfg_.ill_conditioned * base_condition_ || rep.condition > outright || rep.rank < rep.unknowns) {
       rep.status = SolveStatus::DeadPoint;
       os << "dead point (motion limit): the mechanism cannot move past " << m_.variables[var_].name << " = "
          << to_double(q_(var_)) << " (Jacobian singular there, condition " << to_double(rep.condition) << ")";

@@ -13,6 +13,8 @@
 
 #include <Eigen/QR>
 
+#include <sstream>
+
 namespace rollkin {
 
 template <class S> struct NewtonSettings {
@@ -21,7 +23,8 @@ template <class S> struct NewtonSettings {
   S residual_tolerance = epsilon<S>() * S(64);
   /// ...or when a step is below step_tolerance and the residual below consistency_tolerance (round-off).
   S step_tolerance = tolerance<S>(S(3) / S(4));
-  /// Least-squares residual above this at convergence means inconsistent constraints.
+  /// Least-squares residual above this at convergence means inconsistent constraints. Redundant constraints
+  /// between sampled contours agree only to the contours' interpolation error: SolveData raises it to that.
   S consistency_tolerance = tolerance<S>(S(1) / S(2));
 };
 
@@ -61,6 +64,9 @@ template <class S> struct SolveData {
     }
     for (; row < m.equation_count(); ++row) row_scale(row) = m.length_scale;
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) col_scale(c) = m.variable_scale(m.unknowns[c]);
+    using std::max;
+    settings.consistency_tolerance =
+        max(settings.consistency_tolerance, S(S(16) * m.representation_error / m.length_scale));
   }
 
   /// Factors the first `rows` rows of ju, choosing LU or COD as described above. The condition estimate is
@@ -128,6 +134,9 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
   rep.equations = rows;
   rep.unknowns = static_cast<int>(m.unknowns.size());
   S last_step = std::numeric_limits<S>::infinity();
+  S residual_before = std::numeric_limits<S>::infinity();  // two iterations back: stagnation test
+  S residual_last = std::numeric_limits<S>::infinity();
+  bool stagnant = false;
   for (int it = 0;; ++it) {
     evaluate_and_factor(m, q, sd, rows);
     rep.iterations = it;
@@ -135,22 +144,32 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     rep.rank = sd.rank;
     rep.condition = sd.condition;
     const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
-    if (rep.residual <= cfg.residual_tolerance || settled) {
+    // A least-squares residual that no longer halves in two iterations while the steps are small has reached
+    // its minimum: consistent if within the tolerance, otherwise the constraints disagree.
+    stagnant = it >= 2 && rep.residual > residual_before / S(2) && last_step <= tolerance<S>(S(1) / S(3));
+    if (rep.residual <= cfg.residual_tolerance || settled || (stagnant && rep.residual <= cfg.consistency_tolerance)) {
       rep.status = rep.rank < rep.unknowns ? SolveStatus::Underdetermined : SolveStatus::Converged;
       return rep;
     }
-    if (it == cfg.max_iterations) break;
+    if (it == cfg.max_iterations || stagnant) break;
+    residual_before = residual_last;
+    residual_last = rep.residual;
     sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseQuotient(sd.row_scale.head(rows));
     sd.solve(sd.rhs.head(rows), sd.step);
     last_step = sd.step.cwiseAbs().maxCoeff();
     if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += sd.step(c) * sd.col_scale(c);
-    if (last_step <= epsilon<S>() * S(16) && rep.residual > cfg.consistency_tolerance) break;  // stationary
   }
-  const bool stationary = last_step <= cfg.step_tolerance && rep.residual > cfg.consistency_tolerance;
-  rep.status = stationary ? SolveStatus::CannotAssemble : SolveStatus::NoConvergence;
-  rep.detail = stationary ? "the constraints cannot all be met: least-squares residual stays above tolerance"
-                          : "Newton-Raphson did not converge";
+  const bool inconsistent = rep.residual > cfg.consistency_tolerance && (stagnant || last_step <= cfg.step_tolerance);
+  rep.status = inconsistent ? SolveStatus::CannotAssemble : SolveStatus::NoConvergence;
+  std::ostringstream os;
+  if (inconsistent)
+    os << "the constraints cannot all be met: the least-squares residual stays at " << to_double(rep.residual)
+       << " (relative to the mechanism size), above the consistency tolerance " << to_double(cfg.consistency_tolerance);
+  else
+    os << "Newton-Raphson did not converge in " << cfg.max_iterations << " iterations (residual "
+       << to_double(rep.residual) << ")";
+  rep.detail = os.str();
   return rep;
 }
 
