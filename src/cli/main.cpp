@@ -2,6 +2,7 @@
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
 //                       [--rates] [--verbose]
+//   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE
 //   rollkin --help | --version
 //
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed): one line
@@ -12,6 +13,7 @@
 
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/scene.hpp"
+#include "rollkin/reference.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <algorithm>
@@ -40,6 +42,8 @@ struct UsageError : std::runtime_error {
 };
 
 struct Options {
+  std::string command;  // "solve" or "reference"
+  int digits = 50;      // reference: MPFR precision (30, 50 or 100 decimal digits)
   std::string scene;
   std::optional<double> from, to, step;
   std::string csv, plot, draw;
@@ -49,6 +53,7 @@ struct Options {
 const char* kUsage =
     "usage: rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]\n"
     "                           [--rates] [--verbose]\n"
+    "       rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE\n"
     "       rollkin --help | --version\n"
     "\n"
     "Kinematic analysis of planar mechanisms with rolling pairs. 'solve' loads the scene (JSON, see\n"
@@ -64,6 +69,10 @@ const char* kUsage =
     "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
     "\n"
     "Without output options a one-line summary is printed.\n"
+    "\n"
+    "'reference' runs the same assembly and sweep in MPFR (30, 50 or 100 decimal digits, default 50) and\n"
+    "writes the poses as decimal strings (columns as the solve CSV without link poses): reference data for\n"
+    "regression tests and for measuring the double solver's error.\n"
     "Exit status: 0 all requested poses solved; 1 some not (limits on stderr, solved rows still written);\n"
     "2 bad input or command line (nothing written).\n";
 
@@ -77,8 +86,10 @@ double parse_value(const std::string& opt, const std::string& text) {
 
 Options parse_args(const std::vector<std::string>& args) {
   Options o;
-  if (args.empty() || args[0] != "solve")
-    throw UsageError(args.empty() ? "missing command" : "unknown command \"" + args[0] + "\"; expected \"solve\"");
+  if (args.empty() || (args[0] != "solve" && args[0] != "reference"))
+    throw UsageError(args.empty() ? "missing command"
+                                  : "unknown command \"" + args[0] + "\"; expected \"solve\" or \"reference\"");
+  o.command = args[0];
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
@@ -97,12 +108,19 @@ Options parse_args(const std::vector<std::string>& args) {
     else if (a == "--plot") set_path(o.plot);
     else if (a == "--draw") set_path(o.draw);
     else if (a == "--rates") o.rates = true;
+    else if (a == "--digits" && o.command == "reference") {
+      const double d = parse_value(a, value());
+      if (d != 30 && d != 50 && d != 100) throw UsageError("--digits must be 30, 50 or 100");
+      o.digits = static_cast<int>(d);
+    }
     else if (a == "--verbose" || a == "-v") o.verbose = true;
     else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option \"" + a + "\"");
     else if (o.scene.empty()) o.scene = a;
     else throw UsageError("more than one scene file given (\"" + o.scene + "\" and \"" + a + "\")");
   }
   if (o.scene.empty()) throw UsageError("missing scene file");
+  if (o.command == "reference" && (o.csv.empty() || !o.plot.empty() || !o.draw.empty() || o.rates))
+    throw UsageError("reference writes a CSV only: give --csv FILE (and no --plot, --draw or --rates)");
   return o;
 }
 
@@ -217,8 +235,32 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
   return out;
 }
 
+/// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
+int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o) {
+  const Mechanism<double>& m = scene.mechanism;
+  const bool decimal = scene.degrees || m.variables[sw.variable].kind != ParamKind::Angle;
+  ReferenceSweep ref;
+  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
+    std::vector<std::string> values;
+    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
+    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
+  } else {
+    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, io::sweep_inputs(sw), o.digits);
+  }
+  write_reference_csv(ref, m, o.csv);
+  std::size_t solved = 0;
+  for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
+  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
+            << " poses solved at " << o.digits << " digits, written to " << o.csv << "\n";
+  return solved == ref.poses.size() ? 0 : 1;
+}
+
 int run(const Options& o) {
   const io::Scene scene = io::load_scene(o.scene);
+  if (o.command == "reference") {
+    check_outputs(scene, o);
+    return run_reference(scene, requested_sweep(scene, o), o);
+  }
   check_outputs(scene, o);
   const io::Sweep sw = requested_sweep(scene, o);
   const std::vector<double> inputs = io::sweep_inputs(sw);

@@ -130,5 +130,17 @@ check "--csv onto a contour file is refused" $([ "$rc" -eq 2 ] && grep -q "refus
 run solve sampled.json --from -10 --to 10 --step 5 --csv sampled.csv
 check "sampled disk (point file) solves" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' sampled.csv)" -eq 5 ]; echo $?)
 
+# ---- reference: the same sweep in MPFR ---------------------------------------------------------------
+run reference "$EX/paper_fourbar.json" --from -50 --to 100 --step 25 --csv ref.csv
+check "reference exits 0 and writes 7 rows" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' ref.csv)" -eq 7 ]; echo $?)
+run solve "$EX/paper_fourbar.json" --from -50 --to 100 --step 25 --csv dbl.csv
+# Independent of the double path: 50-digit values; the double solve must agree with them to 1e-12 degrees
+# (theta5, column 6), and the reference must carry more than 17 significant digits.
+check "double theta5 agrees with the 50-digit reference to 1e-12 deg" $(paste -d, ref.csv dbl.csv | awk -F, -v n="$(head -n1 ref.csv | awk -F, '{print NF}')" \
+  'NR > 1 { d = $6 - $(n + 6); if (d < 0) d = -d; if (d > 1e-12) bad = 1 } END { exit bad }'; echo $?)
+check "reference values have 50 digits" $(awk -F, 'NR == 2 { exit (length($6) < 45) }' ref.csv; echo $?)
+run reference "$EX/paper_fourbar.json" --digits 40 --csv x.csv
+check "reference --digits 40 is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -f x.csv ]; echo $?)
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

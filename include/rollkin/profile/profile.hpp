@@ -52,8 +52,8 @@ template <class S> class Contour {
     }
     j.p = placement_.act(j.p);
     j.d1 = placement_.rotate(j.d1);
-    j.d2 = placement_.rotate(j.d2);
-    j.d3 = placement_.rotate(j.d3);
+    if (order >= 2) j.d2 = placement_.rotate(j.d2);
+    if (order >= 3) j.d3 = placement_.rotate(j.d3);
     return j;
   }
   /// Signed arc length from u0 to u1 in this contour's (possibly reversed) parameter.

@@ -78,12 +78,11 @@ template <class S> struct SolveData {
     using std::min;
     const auto n = ju.cols();
     if (rows == n && n > 0) {
-      const bool nonzero_pivots = lu.compute(ju.topRows(rows));
-      const auto& u = lu.matrixLU();
-      S largest = abs(u(0, 0)), smallest = largest;
+      const bool nonzero_pivots = lu.compute(ju);
+      S largest = lu.pivot(0), smallest = largest;
       for (Eigen::Index i = 1; i < n; ++i) {
-        largest = max(largest, S(abs(u(i, i))));
-        smallest = min(smallest, S(abs(u(i, i))));
+        largest = max(largest, lu.pivot(i));
+        smallest = min(smallest, lu.pivot(i));
       }
       if (nonzero_pivots && smallest > largest * epsilon<S>() * S(static_cast<int>(n))) {
         lu_active = true;
