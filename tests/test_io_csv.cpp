@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE io_csv
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/csv.hpp"
 
@@ -21,18 +23,9 @@ using namespace rollkin::io;
 
 namespace {
 
-fs::path out_dir() {
-  const fs::path d = fs::path(ROLLKIN_BINARY_DIR) / "test_output" / "io_csv";
-  fs::create_directories(d);
-  return d;
-}
+fs::path out_dir() { return rollkin::testing::scratch_dir("io_csv"); }
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const fs::path& p) { return rollkin::testing::read_text(p); }
 
 std::vector<std::string> lines(const std::string& s) {
   std::vector<std::string> out;

@@ -1,6 +1,8 @@
 #define BOOST_TEST_MODULE io_point_file
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/point_file.hpp"
 
 #include <filesystem>
@@ -12,28 +14,15 @@ using rollkin::read_point_file;
 
 namespace {
 
+using namespace rollkin::testing;
+
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "rollkin_test_io_point_file";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
-  std::ofstream(path) << text;
-  return path;
+  return write_text(scratch_dir("io_point_file") / name, text);
 }
 
 /// The InputError message for reading `text` from a file called `name`, or "" if it reads fine.
 std::string error_for(const std::string& name, const std::string& text, std::size_t min_points = 2) {
-  try {
-    read_point_file(write_temp(name, text), min_points);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  if (s.find(part) != std::string::npos) return true;
-  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
-  return false;
+  return input_error_of([&] { read_point_file(write_temp(name, text), min_points); });
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #define BOOST_TEST_MODULE io_scene
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -20,25 +22,11 @@ namespace fs = std::filesystem;
 
 const std::string kExamples = std::string(ROLLKIN_SOURCE_DIR) + "/examples/";
 
-fs::path temp_dir() {
-  const auto dir = fs::temp_directory_path() / "rollkin_test_io_scene";
-  fs::create_directories(dir);
-  return dir;
-}
+using namespace rollkin::testing;
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  const fs::path path = temp_dir() / name;
-  fs::create_directories(path.parent_path());
-  std::ofstream(path) << text;
-  return path.string();
-}
+fs::path temp_dir() { return scratch_dir("io_scene"); }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string write_temp(const std::string& name, const std::string& text) { return write_text(temp_dir() / name, text); }
 
 /// The paper example's text with `from` replaced by `to` (which must occur).
 std::string paper_with(const std::string& from, const std::string& to) {
@@ -50,18 +38,7 @@ std::string paper_with(const std::string& from, const std::string& to) {
 
 /// The InputError message for loading `text` saved as `name`, or "" if it loads.
 std::string error_for(const std::string& name, const std::string& text) {
-  try {
-    load_scene(write_temp(name, text));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  if (s.find(part) != std::string::npos) return true;
-  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
-  return false;
+  return input_error_of([&] { load_scene(write_temp(name, text)); });
 }
 
 /// Every error names the file, the JSON path and what was expected.

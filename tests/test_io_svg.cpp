@@ -4,6 +4,8 @@
 #define BOOST_TEST_MODULE io_svg
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/svg.hpp"
 
@@ -23,18 +25,9 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-fs::path out_dir() {
-  const fs::path d = fs::path(ROLLKIN_BINARY_DIR) / "test_output" / "io_svg";
-  fs::create_directories(d);
-  return d;
-}
+fs::path out_dir() { return rollkin::testing::scratch_dir("io_svg"); }
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const fs::path& p) { return rollkin::testing::read_text(p); }
 
 std::string unescape(const std::string& s) {
   std::string out;

@@ -1,6 +1,8 @@
 #define BOOST_TEST_MODULE io_svg_path
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/svg_path.hpp"
 
 #include <cmath>
@@ -31,26 +33,13 @@ std::vector<V> ends(const std::string& d) {
 bool same(const V& a, const V& b) { return (a - b).norm() < 1e-14; }
 
 std::string error_for(const std::string& d) {
-  try {
-    parse_svg_path_data(d, kNoFlip, "shape.svg", "cam");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return rollkin::testing::input_error_of([&] { parse_svg_path_data(d, kNoFlip, "shape.svg", "cam"); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-  if (s.find(part) != std::string::npos) return true;
-  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
-  return false;
-}
+using rollkin::testing::contains;
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "rollkin_test_io_svg_path";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
-  std::ofstream(path) << text;
-  return path;
+  return rollkin::testing::write_text(rollkin::testing::scratch_dir("io_svg_path") / name, text);
 }
 
 }  // namespace

@@ -1,0 +1,53 @@
+// Small helpers shared by the test executables: scratch files, reading text back, catching input errors.
+#pragma once
+
+#include <boost/test/unit_test.hpp>
+
+#include "rollkin/io/input_error.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace rollkin::testing {
+
+/// A per-test scratch directory under the build tree (created if needed).
+inline std::filesystem::path scratch_dir(const std::string& test) {
+  const auto dir = std::filesystem::path(ROLLKIN_BINARY_DIR) / "test_output" / test;
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Writes `text` to `path` (creating its directory) and returns the path as a string.
+inline std::string write_text(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+  return path.string();
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The message of the InputError that `f()` throws, or "" if it throws none.
+template <class F> std::string input_error_of(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// True if `s` contains `part`; otherwise logs both, so a failing check shows the message it looked at.
+inline bool contains(const std::string& s, const std::string& part) {
+  if (s.find(part) != std::string::npos) return true;
+  BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
+  return false;
+}
+
+}  // namespace rollkin::testing
