@@ -1,7 +1,7 @@
 // build/rollkin: the command-line tool.
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
-//                       [--rates] [--verbose]
+//                       [--rates] [--verbose] [--interference]
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE
 //   rollkin --help | --version
 //
@@ -15,6 +15,7 @@
 #include "rollkin/io/scene.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/solve/continuation.hpp"
+#include "rollkin/solve/interference.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,12 +48,12 @@ struct Options {
   std::string scene;
   std::optional<double> from, to, step;
   std::string csv, plot, draw;
-  bool rates = false, verbose = false;
+  bool rates = false, verbose = false, interference = false;
 };
 
 const char* kUsage =
     "usage: rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]\n"
-    "                           [--rates] [--verbose]\n"
+    "                           [--rates] [--verbose] [--interference]\n"
     "       rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE\n"
     "       rollkin --help | --version\n"
     "\n"
@@ -67,6 +68,8 @@ const char* kUsage =
     "  --draw FILE.svg  the mechanism at about five poses across the solved range\n"
     "  --rates          add the rate columns to the CSV\n"
     "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
+    "  --interference   check every solved pose for contours that penetrate or touch at a second point\n"
+    "                   (findings on stderr; they make the exit status 1)\n"
     "\n"
     "Without output options a one-line summary is printed.\n"
     "\n"
@@ -108,6 +111,7 @@ Options parse_args(const std::vector<std::string>& args) {
     else if (a == "--plot") set_path(o.plot);
     else if (a == "--draw") set_path(o.draw);
     else if (a == "--rates") o.rates = true;
+    else if (a == "--interference" && o.command == "solve") o.interference = true;
     else if (a == "--digits" && o.command == "reference") {
       const double d = parse_value(a, value());
       if (d != 30 && d != 50 && d != 100) throw UsageError("--digits must be 30, 50 or 100");
@@ -255,6 +259,37 @@ int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o)
   return solved == ref.poses.size() ? 0 : 1;
 }
 
+/// --interference: contours sampled in world coordinates at every solved pose (solve/interference.hpp); one
+/// line per run of consecutive poses with the same finding, inputs in the file's units.
+std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
+  const Mechanism<double>& m = scene.mechanism;
+  const SweepInterference si = check_interference(m, result);
+  struct Run {
+    InterferenceKind kind;
+    int a, b;
+    double from, to;
+    bool open;
+  };
+  std::vector<Run> runs;
+  for (const auto& pose : si.poses) {
+    for (auto& r : runs) r.open = r.open && pose.checked && !pose.clear();
+    for (const auto& f : pose.findings) {
+      Run* run = nullptr;
+      for (auto& r : runs)
+        if (r.open && r.kind == f.kind && r.a == f.contour_a && r.b == f.contour_b) run = &r;
+      if (run) run->to = pose.input;
+      else runs.push_back(Run{f.kind, f.contour_a, f.contour_b, pose.input, pose.input, true});
+    }
+  }
+  std::vector<std::string> lines;
+  const std::string unit = scene.unit_label(sw.variable);
+  for (const auto& r : runs)
+    lines.push_back(std::string("interference: ") + to_string(r.kind) + " between '" + m.contours[r.a].name() +
+                    "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
+                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit));
+  return lines;
+}
+
 int run(const Options& o) {
   const io::Scene scene = io::load_scene(o.scene);
   if (o.command == "reference") {
@@ -302,6 +337,8 @@ int run(const Options& o) {
                        " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
                        " unknowns, condition " + fmt(assembly.condition, 3) + ")");
   for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+  const std::vector<std::string> clashes = o.interference ? interference_lines(scene, sw, result) : std::vector<std::string>{};
+  problems.insert(problems.end(), clashes.begin(), clashes.end());
   if (!assembly.ok())
     for (const auto& note : osculating_contacts(m, q)) problems.push_back(note);
 
@@ -322,7 +359,7 @@ int run(const Options& o) {
   }
   std::cout << summary.str() << "\n";
   for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
-  return solved == inputs.size() && assembly.ok() ? 0 : 1;
+  return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
 }
 
 }  // namespace

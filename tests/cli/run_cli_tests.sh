@@ -130,6 +130,18 @@ check "--csv onto a contour file is refused" $([ "$rc" -eq 2 ] && grep -q "refus
 run solve sampled.json --from -10 --to 10 --step 5 --csv sampled.csv
 check "sampled disk (point file) solves" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' sampled.csv)" -eq 5 ]; echo $?)
 
+# ---- interference along a sweep -----------------------------------------------------------------------
+# The cycloid's disk (r = 1, centre (s, 1)) meets a kerb (r = 0.5 at (4, 0.5)) where the centres are closer than
+# 1.5: s in (4 - sqrt 2, 4 + sqrt 2). Expected: the first and last grid values k pi/10 inside that interval.
+sed 's|"material": "right"}]|"material": "right"}, {"name": "kerb", "type": "circle", "radius": 0.5, "at": {"x": 4, "y": 0.5}}]|' \
+  "$EX/cycloid.json" > kerb.json
+run solve kerb.json --interference
+range=$(awk 'BEGIN { pi = 3.141592653589793; lo = 4 - sqrt(2); hi = 4 + sqrt(2); first = ""; for (k = 0; k <= 20; ++k) { s = k * pi / 10; if (s > lo && s < hi) { if (first == "") first = s; last = s } } printf "from %.8g to %.8g", first, last }')
+check "--interference reports the penetration range predicted in closed form (exit 1)" \
+  $([ "$rc" -eq 1 ] && grep -q "penetration between 'ground.kerb' and 'disk.rim' for S.s $range" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --interference
+check "--interference on the paper example finds nothing (exit 0)" $([ "$rc" -eq 0 ] && [ ! -s err.txt ]; echo $?)
+
 # ---- reference: the same sweep in MPFR ---------------------------------------------------------------
 run reference "$EX/paper_fourbar.json" --from -50 --to 100 --step 25 --csv ref.csv
 check "reference exits 0 and writes 7 rows" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' ref.csv)" -eq 7 ]; echo $?)

@@ -125,7 +125,9 @@ template <class S> void evaluate_and_factor(const Mechanism<S>& m, const VectorX
 }
 
 /// Newton-Raphson at fixed driver values (taken from q). Uses the first `rows` equations (all by default).
-/// On return q holds the last iterate and sd is evaluated and factored there.
+/// On return q holds the last iterate and sd is evaluated and factored there. Plain Newton does not know
+/// branches: started from a poor guess near a motion limit it may converge to another assembly mode. The
+/// continuation (continuation.hpp) guards against that; call sweep() to follow a motion.
 template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd, int rows = -1) {
   if (rows < 0) rows = m.equation_count();
   const NewtonSettings<S>& cfg = sd.settings;
