@@ -143,6 +143,7 @@ template <class S> class Tracer {
         break;
       }
     }
+    for (int d : m_.drivers) trial_(d) = q_(d);  // the other inputs stay exactly where they are
     trial_(var_) = t;
   }
 
