@@ -43,7 +43,7 @@ template <class S> void evaluate_pairs(const Mechanism<S>& m, const VectorX<S>& 
                                        int order, KinematicsData<S>& d) {
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
     const int i = m.pairs[k].first_variable;
-    d.pairs[k] = evaluate_pair(m.pairs[k], m.contours, q.data() + i, qdot ? qdot->data() + i : nullptr, order);
+    evaluate_pair(m.pairs[k], m.contours, q.data() + i, qdot ? qdot->data() + i : nullptr, order, d.pairs[k]);
   }
 }
 
@@ -59,27 +59,43 @@ template <class S> SE2<S> loop_step(const PairState<S>& st, bool forward, std::a
   return inv;
 }
 
+/// One loop's rows (eq. 6): walks the loop accumulating L_k, stores each variable's spatial twist
+/// Ad_{L_k} lambda in d.spatial (for a backward step, Ad_{L_k} of -Ad_{E^-1} mu, as in loop_step), and
+/// writes the residual of T = L_n+1 and the Jacobian columns, the residual rates under those twists.
+/// Only the pair's own variables are mapped (a revolute's unused second twist is skipped).
+template <class S> void loop_constraints(const Mechanism<S>& m, const std::vector<LoopEdge>& loop, int row,
+                                         KinematicsData<S>& d) {
+  SE2<S> left;  // L_k
+  for (const LoopEdge& e : loop) {
+    const Pair<S>& p = m.pairs[e.pair];
+    const PairState<S>& st = d.pairs[e.pair];
+    const int count = p.variable_count();
+    Twist<S>* spatial = &d.spatial[static_cast<std::size_t>(p.first_variable)];
+    if (e.forward) {
+      for (int j = 0; j < count; ++j) spatial[j] = left.adjoint(st.twist[j]);
+      left = left * st.transform;
+    } else {
+      const SE2<S> inv = st.transform.inverse();
+      for (int j = 0; j < count; ++j) spatial[j] = left.adjoint(-inv.adjoint(st.twist[j]));
+      left = left * inv;
+    }
+  }
+  d.residual.template segment<3>(row) = Vec3<S>(left.translation().x(), left.translation().y(), left.angle());
+  for (const LoopEdge& e : loop) {
+    const Pair<S>& p = m.pairs[e.pair];
+    for (int j = 0; j < p.variable_count(); ++j) {
+      const int v = p.first_variable + j;
+      d.jacobian.template block<3, 1>(row, v) += residual_rate(left, d.spatial[static_cast<std::size_t>(v)]);
+    }
+  }
+}
+
 /// Residual and Jacobian at the pair states in d (evaluate_pairs first).
 template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX<S>& q, KinematicsData<S>& d) {
   d.jacobian.setZero();
   int row = 0;
   for (const auto& loop : m.loops) {
-    SE2<S> left;  // L_k
-    std::array<Twist<S>, 2> tw;
-    for (const LoopEdge& e : loop) {
-      const Pair<S>& p = m.pairs[e.pair];
-      const SE2<S> step = loop_step(d.pairs[e.pair], e.forward, tw);
-      for (int j = 0; j < p.variable_count(); ++j) d.spatial[p.first_variable + j] = left.adjoint(tw[j]);
-      left = left * step;
-    }
-    d.residual.template segment<3>(row) = Vec3<S>(left.translation().x(), left.translation().y(), left.angle());
-    for (const LoopEdge& e : loop) {
-      const Pair<S>& p = m.pairs[e.pair];
-      for (int j = 0; j < p.variable_count(); ++j) {
-        const int v = p.first_variable + j;
-        d.jacobian.template block<3, 1>(row, v) += residual_rate(left, d.spatial[v]);
-      }
-    }
+    loop_constraints(m, loop, row, d);
     row += 3;
   }
   for (int k : m.rolling_pairs) {

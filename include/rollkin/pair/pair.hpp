@@ -76,43 +76,58 @@ template <class S> struct PairState {
   std::array<ContourPoint<S>, 2> contact;
 };
 
+/// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames are skipped: composing with the
+/// exact identity changes no digit, and most joints sit at a link's origin on at least one side.
+template <class S> SE2<S> in_joint_frames(const SE2<S>& frame_a, const SE2<S>& p, const SE2<S>& frame_b) {
+  const SE2<S> left = frame_a.is_identity() ? p : SE2<S>(frame_a * p);
+  return frame_b.is_identity() ? left : SE2<S>(left * frame_b.inverse());
+}
+
+/// Evaluates the pair into st (every field is written; contact only for cam and rolling pairs).
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
-template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,
-                                             const S* q, const std::common_type_t<S>* qdot, int order) {
-  PairState<S> st;
+template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours, const S* q,
+                                      const std::common_type_t<S>* qdot, int order, PairState<S>& st) {
   const Twist<S> zero = Twist<S>::Zero();
   st.twist_rate = {zero, zero};
   switch (pair.kind) {
     case PairKind::Revolute:
-      st.transform = pair.frame_a * SE2<S>::rotation(q[0]) * pair.frame_b.inverse();
-      st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(0), S(0), S(1)));
+      st.transform = in_joint_frames(pair.frame_a, SE2<S>::rotation(q[0]), pair.frame_b);
+      // Ad_{F_A} (0, 0, 1) = (t_y, -t_x, 1): rotation about the joint's origin t in link A.
+      st.twist[0] = Twist<S>(pair.frame_a.translation().y(), S(-pair.frame_a.translation().x()), S(1));
       st.twist[1] = zero;
-      return st;
+      return;
     case PairKind::Prismatic:
-      st.transform = pair.frame_a * SE2<S>::translation(Vec2<S>(q[0], S(0))) * pair.frame_b.inverse();
+      st.transform = in_joint_frames(pair.frame_a, SE2<S>::translation(Vec2<S>(q[0], S(0))), pair.frame_b);
       st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(1), S(0), S(0)));
       st.twist[1] = zero;
-      return st;
+      return;
     case PairKind::Cam:
     case PairKind::Rolling: break;
   }
   // Contours carry their placement: T_A, T_B are already in the link frames (F_A = F_B = I).
   const int geo = order >= 2 ? order : 2;  // curvature is needed for the twists themselves
-  const ContourPoint<S> a = contour_point(contours[pair.contour_a].jet(q[0], geo), geo);
-  const ContourPoint<S> b = contour_point(contours[pair.contour_b].jet(q[1], geo), geo);
+  st.contact[0] = contour_point(contours[pair.contour_a].jet(q[0], geo), geo);
+  st.contact[1] = contour_point(contours[pair.contour_b].jet(q[1], geo), geo);
+  const ContourPoint<S>& a = st.contact[0];
+  const ContourPoint<S>& b = st.contact[1];
   const SE2<S> ta = SE2<S>::from_axis(a.tangent.x(), a.tangent.y(), a.p);
   const SE2<S> tb = SE2<S>::from_axis(b.tangent.x(), b.tangent.y(), b.p);
-  const SE2<S> flip = SE2<S>::from_axis(S(-1), S(0), Vec2<S>(S(0), S(0)));  // Rot(pi), exact
-  st.transform = ta * flip * tb.inverse();                                    // eq. (1)
+  // eq. (1): T_A Rot(pi) T_B^-1; T_A Rot(pi) is T_A with its axis reversed (exact).
+  st.transform = SE2<S>::from_axis(S(-a.tangent.x()), S(-a.tangent.y()), a.p) * tb.inverse();
   st.twist[0] = ta.adjoint(Twist<S>(a.speed, S(0), a.turn_rate));
-  st.twist[1] = ta.adjoint(Twist<S>(b.speed, S(0), -b.turn_rate));
-  st.contact = {a, b};
+  st.twist[1] = ta.adjoint(Twist<S>(b.speed, S(0), S(-b.turn_rate)));
   if (qdot != nullptr && order >= 3) {
     // d/dt Ad_{T_A} x = Ad_{T_A} xdot + ad_{lambda_u udot} Ad_{T_A} x   (T_A moves with u only)
     st.twist_rate[0] = ta.adjoint(Twist<S>(a.speed_rate, S(0), a.turn_accel)) * qdot[0];
     st.twist_rate[1] = lie_bracket<S>(st.twist[0] * qdot[0], st.twist[1]) +
-                       ta.adjoint(Twist<S>(b.speed_rate, S(0), -b.turn_accel)) * qdot[1];
+                       ta.adjoint(Twist<S>(b.speed_rate, S(0), S(-b.turn_accel))) * qdot[1];
   }
+}
+
+template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,
+                                             const S* q, const std::common_type_t<S>* qdot, int order) {
+  PairState<S> st;
+  evaluate_pair(pair, contours, q, qdot, order, st);
   return st;
 }
 

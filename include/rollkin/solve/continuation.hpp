@@ -51,17 +51,34 @@ template <class S> struct SweepResult {
 
 namespace detail {
 
-/// First contact variable outside its open contour's domain, or -1.
-template <class S> int domain_violation(const Mechanism<S>& m, const VectorX<S>& q) {
-  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
-    const Pair<S>& p = m.pairs[k];
-    if (!is_contact(p.kind)) continue;
-    for (int j = 0; j < 2; ++j) {
-      const Domain<S> d = m.contours[j == 0 ? p.contour_a : p.contour_b].domain();
-      if (!d.contains(q(p.first_variable + j))) return p.first_variable + j;
+/// The contact variables on open contours with their domains, in pair order (closed contours wrap: any
+/// parameter value is inside). Collected once per sweep: the check runs after every accepted step.
+template <class S> struct OpenDomains {
+  std::vector<int> variables;
+  std::vector<Domain<S>> domains;
+
+  explicit OpenDomains(const Mechanism<S>& m) {
+    for (const Pair<S>& p : m.pairs) {
+      if (!is_contact(p.kind)) continue;
+      for (int j = 0; j < 2; ++j) {
+        const Domain<S> d = m.contours[j == 0 ? p.contour_a : p.contour_b].domain();
+        if (d.closed) continue;
+        variables.push_back(p.first_variable + j);
+        domains.push_back(d);
+      }
     }
   }
-  return -1;
+  /// First contact variable outside its open contour's domain, or -1.
+  int violation(const VectorX<S>& q) const {
+    for (std::size_t k = 0; k < variables.size(); ++k)
+      if (!domains[k].contains(q(variables[k]))) return variables[k];
+    return -1;
+  }
+};
+
+/// First contact variable outside its open contour's domain, or -1.
+template <class S> int domain_violation(const Mechanism<S>& m, const VectorX<S>& q) {
+  return OpenDomains<S>(m).violation(q);
 }
 
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
@@ -70,7 +87,7 @@ template <class S> class Tracer {
  public:
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
-        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())) {
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), open_(m) {
     rate_(driver) = S(1);
     start_ = solve_position(m_, q_, sd_);
     solve_velocity(m_, sd_, rate_, v_);
@@ -94,7 +111,7 @@ template <class S> class Tracer {
       const bool accepted = try_step(t, rep);
       iterations += rep.iterations + 1;
       if (accepted) {
-        const int out = domain_violation(m_, trial_);
+        const int out = open_.violation(trial_);
         if (out >= 0) return locate_domain_exit(t, out);
         accept();
         h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
@@ -198,7 +215,7 @@ template <class S> class Tracer {
     SolveReport<S> rep;
     while (abs(t - q_(var_)) > cfg_.min_step) {
       const S mid = (q_(var_) + t) / S(2);
-      if (try_step(mid, rep) && domain_violation(m_, trial_) < 0) accept();
+      if (try_step(mid, rep) && open_.violation(trial_) < 0) accept();
       else t = mid;
     }
     trial_ = q_;
@@ -221,6 +238,7 @@ template <class S> class Tracer {
   int var_;
   const ContinuationSettings<S>& cfg_;
   VectorX<S> q_, q_prev_, trial_, tangent_, v_, v_prev_, rate_;
+  OpenDomains<S> open_;
   bool has_prev_ = false;
   SolveReport<S> start_;
   S base_condition_;

@@ -37,7 +37,8 @@ template <class S> struct NewtonSettings {
 template <class S> struct SolveData {
   KinematicsData<S> kin;
   VectorX<S> row_scale, col_scale;       // residual and variable scales
-  MatrixX<S> ju;                         // scaled Jacobian of the unknowns
+  MatrixX<S> ju;                         // scaled Jacobian of the unknowns (filled for the COD only)
+  std::vector<int> unknowns;             // the unknowns' columns in kin.jacobian
   VectorX<S> rhs, step;                  // scaled
   SmallLU<S> lu;
   Eigen::CompleteOrthogonalDecomposition<MatrixX<S>> cod;
@@ -52,6 +53,7 @@ template <class S> struct SolveData {
         row_scale(m.equation_count()),
         col_scale(m.unknowns.size()),
         ju(m.equation_count(), m.unknowns.size()),
+        unknowns(m.unknowns),
         rhs(m.equation_count()),
         step(m.unknowns.size()),
         lu(m.unknowns.size()),
@@ -69,7 +71,15 @@ template <class S> struct SolveData {
         max(settings.consistency_tolerance, S(S(16) * m.representation_error / m.length_scale));
   }
 
-  /// Factors the first `rows` rows of ju, choosing LU or COD as described above. The condition estimate is
+  /// Entry (r, c) of the scaled Jacobian of the unknowns R^-1 J_u C: row r divided by its residual scale,
+  /// column c (variable unknowns[c]) multiplied by its variable scale.
+  S scaled_jacobian(Eigen::Index r, Eigen::Index c) const {
+    return kin.jacobian(r, unknowns[static_cast<std::size_t>(c)]) / row_scale(r) * col_scale(c);
+  }
+
+  /// Factors the first `rows` rows of the scaled Jacobian of the unknowns (kin.jacobian evaluated),
+  /// choosing LU or COD as described above. The LU reads the scaled entries straight from kin.jacobian;
+  /// ju is filled only for the COD. The condition estimate is
   /// the pivot ratio of the triangular factor (max |u_ii| / min |u_ii| for LU, |r_11| / |r_nn| for the
   /// column-pivoted QR inside COD): cheap, and it grows like 1/sigma_min toward a singular pose.
   void factor(int rows) {
@@ -78,7 +88,7 @@ template <class S> struct SolveData {
     using std::min;
     const auto n = ju.cols();
     if (rows == n && n > 0) {
-      const bool nonzero_pivots = lu.compute(ju);
+      const bool nonzero_pivots = lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); });
       S largest = lu.pivot(0), smallest = largest;
       for (Eigen::Index i = 1; i < n; ++i) {
         largest = max(largest, lu.pivot(i));
@@ -92,6 +102,8 @@ template <class S> struct SolveData {
       }
     }
     lu_active = false;
+    for (Eigen::Index c = 0; c < n; ++c)
+      for (Eigen::Index r = 0; r < ju.rows(); ++r) ju(r, c) = scaled_jacobian(r, c);
     if (rows == ju.rows()) cod.compute(ju);
     else cod.compute(ju.topRows(rows));
     rank = static_cast<int>(cod.rank());
@@ -118,9 +130,6 @@ template <class S, class A, class B> S scaled_max_norm(const A& v, const B& scal
 template <class S> void evaluate_and_factor(const Mechanism<S>& m, const VectorX<S>& q, SolveData<S>& sd, int rows) {
   evaluate_pairs<S>(m, q, nullptr, 2, sd.kin);
   compute_constraints(m, q, sd.kin);
-  const auto n = static_cast<Eigen::Index>(m.unknowns.size());
-  for (Eigen::Index c = 0; c < n; ++c)
-    sd.ju.col(c) = sd.kin.jacobian.col(m.unknowns[c]).cwiseQuotient(sd.row_scale) * sd.col_scale(c);
   sd.factor(rows);
 }
 
@@ -179,8 +188,12 @@ template <class S> void solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, 
                                        VectorX<S>& qdot) {
   qdot.setZero(m.variable_count());
   for (std::size_t k = 0; k < m.drivers.size(); ++k) qdot(m.drivers[k]) = driver_rates(k);
-  sd.rhs.noalias() = sd.kin.jacobian * qdot;
-  sd.rhs = -sd.rhs.cwiseQuotient(sd.row_scale);
+  // rhs = -R^-1 J_d qdot_d: only the drivers' columns (the unknowns' rates are still zero).
+  for (Eigen::Index r = 0; r < sd.rhs.size(); ++r) {
+    S sum(0);
+    for (std::size_t k = 0; k < m.drivers.size(); ++k) sum += sd.kin.jacobian(r, m.drivers[k]) * driver_rates(k);
+    sd.rhs(r) = -sum / sd.row_scale(r);
+  }
   sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
 }

@@ -10,6 +10,13 @@
 
 #include <vector>
 
+// Full unrolling of the fixed-size kernels (GCC and Clang both read this pragma; others ignore it).
+#if defined(__GNUC__) || defined(__clang__)
+#define ROLLKIN_UNROLL _Pragma("GCC unroll 8")
+#else
+#define ROLLKIN_UNROLL
+#endif
+
 namespace rollkin {
 
 template <class S> class SmallLU {
@@ -19,66 +26,115 @@ template <class S> class SmallLU {
   explicit SmallLU(Eigen::Index n = 0) : n_(n), lu_(static_cast<std::size_t>(n * n)), row_(static_cast<std::size_t>(n)) {}
 
   /// Factors P A = L U in a row-major buffer; pivoting permutes row indices, not the data.
-  /// Returns false if a pivot is exactly zero (then solve() must not be used).
+  /// Returns false if a pivot is exactly zero (then solve() must not be used). `a` is anything with a(i, j):
+  /// a matrix, or a function computing the entries (read once each).
+  /// Sizes 1 to 8 run a kernel whose size is a compile-time constant (fully unrolled loops, no
+  /// bounds bookkeeping); the arithmetic and its order are the same for every size.
   template <class M> bool compute(const M& a) {
-    using std::abs;
-    const Eigen::Index n = n_;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      row_[i] = i;
-      for (Eigen::Index j = 0; j < n; ++j) at(i, j) = a(i, j);
+    switch (n_) {
+      case 1: return compute_n<1>(a);
+      case 2: return compute_n<2>(a);
+      case 3: return compute_n<3>(a);
+      case 4: return compute_n<4>(a);
+      case 5: return compute_n<5>(a);
+      case 6: return compute_n<6>(a);
+      case 7: return compute_n<7>(a);
+      case 8: return compute_n<8>(a);
+      default: return compute_n<kDynamic>(a);
     }
-    for (Eigen::Index k = 0; k < n; ++k) {
-      Eigen::Index p = k;
-      S best = abs(at(row_[k], k));
-      for (Eigen::Index i = k + 1; i < n; ++i) {
-        const S candidate = abs(at(row_[i], k));
-        if (candidate > best) {
-          best = candidate;
-          p = i;
-        }
-      }
-      if (best == S(0)) return false;
-      std::swap(row_[p], row_[k]);
-      S* pivot_row = &at(row_[k], 0);
-      const S inv = S(1) / pivot_row[k];
-      for (Eigen::Index i = k + 1; i < n; ++i) {
-        S* r = &at(row_[i], 0);
-        const S f = r[k] * inv;
-        r[k] = f;
-        for (Eigen::Index j = k + 1; j < n; ++j) r[j] -= f * pivot_row[j];
-      }
-    }
-    return true;
   }
 
   /// Solves A x = b (forward substitution with the unit lower factor, back substitution with U).
   template <class B> void solve(const B& b, Vector& x) const {
-    const Eigen::Index n = n_;
-    x.resize(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const S* r = &at(row_[i], 0);
-      S sum = b(row_[i]);
-      for (Eigen::Index j = 0; j < i; ++j) sum -= r[j] * x(j);
-      x(i) = sum;
-    }
-    for (Eigen::Index i = n - 1; i >= 0; --i) {
-      const S* r = &at(row_[i], 0);
-      S sum = x(i);
-      for (Eigen::Index j = i + 1; j < n; ++j) sum -= r[j] * x(j);
-      x(i) = sum / r[i];
+    x.resize(n_);
+    switch (n_) {
+      case 1: return solve_n<1>(b, x);
+      case 2: return solve_n<2>(b, x);
+      case 3: return solve_n<3>(b, x);
+      case 4: return solve_n<4>(b, x);
+      case 5: return solve_n<5>(b, x);
+      case 6: return solve_n<6>(b, x);
+      case 7: return solve_n<7>(b, x);
+      case 8: return solve_n<8>(b, x);
+      default: return solve_n<kDynamic>(b, x);
     }
   }
 
   /// |u_ii|, the pivots of the upper factor (for the pivot-ratio condition estimate).
   S pivot(Eigen::Index i) const {
     using std::abs;
-    return abs(at(row_[i], i));
+    return abs(lu_[static_cast<std::size_t>(row_[i] * n_ + i)]);
   }
   Eigen::Index size() const { return n_; }
 
  private:
-  S& at(Eigen::Index i, Eigen::Index j) { return lu_[static_cast<std::size_t>(i * n_ + j)]; }
-  const S& at(Eigen::Index i, Eigen::Index j) const { return lu_[static_cast<std::size_t>(i * n_ + j)]; }
+  static constexpr int kDynamic = 0;  // kernel size 0: the run-time size n_
+
+  template <int N> Eigen::Index dim() const { return N == kDynamic ? n_ : Eigen::Index(N); }
+
+  /// Doolittle elimination with row pivoting (Golub & Van Loan, Algorithm 3.4.1) on the row-major copy.
+  template <int N, class M> bool compute_n(const M& a) {
+    using std::abs;
+    const Eigen::Index n = dim<N>();
+    S* lu = lu_.data();
+    Eigen::Index* row = row_.data();
+    ROLLKIN_UNROLL
+    for (Eigen::Index i = 0; i < n; ++i) {
+      row[i] = i;
+      ROLLKIN_UNROLL
+      for (Eigen::Index j = 0; j < n; ++j) lu[i * n + j] = a(i, j);
+    }
+    ROLLKIN_UNROLL
+    for (Eigen::Index k = 0; k < n; ++k) {
+      Eigen::Index p = k;
+      S best = abs(lu[row[k] * n + k]);
+      ROLLKIN_UNROLL
+      for (Eigen::Index i = k + 1; i < n; ++i) {
+        const S candidate = abs(lu[row[i] * n + k]);
+        if (candidate > best) {
+          best = candidate;
+          p = i;
+        }
+      }
+      if (best == S(0)) return false;
+      std::swap(row[p], row[k]);
+      const S* pivot_row = lu + row[k] * n;
+      const S inv = S(1) / pivot_row[k];
+      ROLLKIN_UNROLL
+      for (Eigen::Index i = k + 1; i < n; ++i) {
+        S* r = lu + row[i] * n;
+        const S f = r[k] * inv;
+        r[k] = f;
+        ROLLKIN_UNROLL
+        for (Eigen::Index j = k + 1; j < n; ++j) r[j] -= f * pivot_row[j];
+      }
+    }
+    return true;
+  }
+
+  /// L y = P b by forward substitution, then U x = y by back substitution (Golub & Van Loan, 3.1).
+  template <int N, class B> void solve_n(const B& b, Vector& x) const {
+    const Eigen::Index n = dim<N>();
+    const S* lu = lu_.data();
+    const Eigen::Index* row = row_.data();
+    S* xs = x.data();
+    ROLLKIN_UNROLL
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const S* r = lu + row[i] * n;
+      S sum = b(row[i]);
+      ROLLKIN_UNROLL
+      for (Eigen::Index j = 0; j < i; ++j) sum -= r[j] * xs[j];
+      xs[i] = sum;
+    }
+    ROLLKIN_UNROLL
+    for (Eigen::Index i = n - 1; i >= 0; --i) {
+      const S* r = lu + row[i] * n;
+      S sum = xs[i];
+      ROLLKIN_UNROLL
+      for (Eigen::Index j = i + 1; j < n; ++j) sum -= r[j] * xs[j];
+      xs[i] = sum / r[i];
+    }
+  }
 
   Eigen::Index n_;
   std::vector<S> lu_;                 // row-major n x n: L below the diagonal (unit diagonal implied), U on and above
