@@ -356,6 +356,18 @@ class SceneReader {
     return inside != *natural_inside;
   }
 
+  /// "parameter" of a sampled or Bezier/SVG contour: "native" (default: chord length, segment parameter) or
+  /// "arc_length" (the profile re-parameterised by arc length, ArcLengthProfile). Returns true for arc length.
+  bool arc_length_parameter(const json& c, const std::string& path) const {
+    const json* p = get(c, "parameter");
+    if (p == nullptr) return false;
+    const std::string v = string(*p, child(path, "parameter"), "the contour parameter");
+    static const std::vector<std::string> allowed = {"native", "arc_length"};
+    if (v != "native" && v != "arc_length")
+      fail(child(path, "parameter"), "unknown contour parameter \"" + v + "\"; expected one of " + quoted_list(allowed));
+    return v == "arc_length";
+  }
+
   void read_contour(const json& c, const std::string& path, int link, const std::string& link_name,
                     std::set<std::string>& names, Scene& scene) {
     if (!c.is_object()) fail(path, "expected a contour object, got " + kind_of(c));
@@ -413,7 +425,7 @@ class SceneReader {
       shape = Ellipse<double>(A, B, am);
       reversed = material(c, path, true, "inside");
     } else if (type == "samples") {
-      keys({"file", "points", "closed", "smoothing", "scale"});
+      keys({"file", "points", "closed", "smoothing", "scale", "parameter"});
       const bool closed = get(c, "closed") ? boolean(c["closed"], child(path, "closed"), "whether the contour is closed") : false;
       const double scale = number_or(c, path, "scale", 1.0, "a scale factor");
       if (!(scale > 0)) fail(child(path, "scale"), "expected a positive scale factor, got " + fmt(scale));
@@ -456,7 +468,7 @@ class SceneReader {
       }
       reversed = closed ? material(c, path, area > 0, "inside") : material(c, path, std::nullopt, "left");
     } else if (type == "bezier") {
-      keys({"segments", "closed"});
+      keys({"segments", "closed", "parameter"});
       const bool closed = get(c, "closed") ? boolean(c["closed"], child(path, "closed"), "whether the path is closed") : false;
       const json& segs = array(require(c, path, "segments", "the Bezier segments"), child(path, "segments"), "a list of segments");
       if (segs.empty()) fail(child(path, "segments"), "contour too short: no segments; expected at least one");
@@ -486,7 +498,7 @@ class SceneReader {
       }
       reversed = closed ? material(c, path, signed_area(polygon) > 0, "inside") : material(c, path, std::nullopt, "left");
     } else {  // svg
-      keys({"file", "path", "flip_y", "scale"});
+      keys({"file", "path", "flip_y", "scale", "parameter"});
       const std::string svg = contour_file(require(c, path, "file", "the SVG file"), child(path, "file"), scene);
       const std::string id = string(require(c, path, "path", "the id of the <path> element"), child(path, "path"), "a path id");
       SvgPathOptions opt;
@@ -512,6 +524,10 @@ class SceneReader {
         fail(path, "the SVG path \"" + id + "\" in " + svg + " is not a usable contour: " + e.what());
       }
       reversed = closed ? material(c, path, signed_area(polygon) > 0, "inside") : material(c, path, std::nullopt, "left");
+    }
+    if ((type == "samples" || type == "bezier" || type == "svg") && arc_length_parameter(c, path)) {
+      if (const auto* sp = std::get_if<SampledProfile<double>>(&*shape)) shape = ArcLengthProfile<double>(*sp);
+      else shape = ArcLengthProfile<double>(std::get<BezierPath<double>>(*shape));
     }
     const std::string nm = name(require(c, path, "name", "the contour's name"), child(path, "name"), "contour name");
     if (!names.insert(nm).second) fail(child(path, "name"), "duplicate contour name \"" + nm + "\" on link \"" + link_name + "\"");

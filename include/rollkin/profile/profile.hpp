@@ -6,6 +6,7 @@
 // on the left again (method.md section 3). Derivatives of odd order change sign under that reversal.
 #pragma once
 
+#include "rollkin/profile/arc_length_parameterised.hpp"
 #include "rollkin/profile/bezier.hpp"
 #include "rollkin/profile/circle.hpp"
 #include "rollkin/profile/ellipse.hpp"
@@ -19,9 +20,11 @@
 
 namespace rollkin {
 
-/// The closed set of profile types: analytic curves, sampled contours (spline), Bezier paths.
+/// The closed set of profile types: analytic curves, sampled contours (spline), Bezier paths, and a spline
+/// or Bezier path re-parameterised by arc length.
 template <class S>
-using ProfileShape = std::variant<Line<S>, Circle<S>, Parabola<S>, Ellipse<S>, SampledProfile<S>, BezierPath<S>>;
+using ProfileShape = std::variant<Line<S>, Circle<S>, Parabola<S>, Ellipse<S>, SampledProfile<S>, BezierPath<S>,
+                                  ArcLengthProfile<S>>;
 
 template <class S> class Contour {
  public:
@@ -69,16 +72,17 @@ template <class S> class Contour {
   /// How far the profile may lie from the contour it stands for: zero for analytic and Bezier profiles (exact
   /// by definition); for a cubic spline through samples the interpolation error estimated from the jumps of
   /// the third derivative at the knots, e ~ (5/384) h^4 |p^(4)| ~ (5/384) h^3 |jump p^(3)|, plus the
-  /// smoothing deviation.
+  /// smoothing deviation. A spline re-parameterised by arc length is the same curve: its base spline's error.
   S representation_error() const {
     using std::max;
-    const auto* spline = std::get_if<SampledProfile<S>>(&shape_);
+    const SampledProfile<S>* spline = std::get_if<SampledProfile<S>>(&shape_);
+    if (const auto* al = std::get_if<ArcLengthProfile<S>>(&shape_)) spline = al->sampled();
     if (spline == nullptr) return S(0);
     const std::size_t n = spline->span_count();
     S worst(0);
     Vec2<S> previous = spline->jet(mid_span(*spline, 0), 3).d3;
     for (std::size_t k = 1; k <= n; ++k) {
-      if (k == n && !domain().closed) break;
+      if (k == n && !spline->domain().closed) break;
       const std::size_t span = k % n;
       const Vec2<S> d3 = spline->jet(mid_span(*spline, span), 3).d3;
       const S h = spline->knot(span + 1) - spline->knot(span);
