@@ -21,11 +21,13 @@
 // is the base's at the same point. (u''' is checked against central differences of u(s) in
 // tests/test_profile_arc_length.cpp.)
 //
-// u(s): the table of cumulative piece lengths s_k (the same quadrature the base uses for its own table, so
-// s(u) agrees with base.arc_length(u_lo, u) to round-off), a binary search for the piece, a cubic Hermite
-// guess from the end values (s_k, u_k) and end slopes du/ds = 1/sigma (O(h^4) accurate, so Newton needs
-// one or two steps), then Newton on s_k + integral_{u_k}^{u} |p'| - s with derivative |p'(u)|, kept inside
-// the piece's bracket by bisection. No mutable state: const use from several threads is race-free (the
+// u(s): a table of nodes u_k with their arc lengths s_k and speeds, built once: the base's knots, and for a
+// Bezier path also 32 equal steps in u inside every segment (its quadrature over a whole segment needs many
+// panels, over 1/32 of it one or a few). s_k accumulates the base's own piece quadrature, so s(u) agrees with
+// base.arc_length(u_lo, u) to round-off. Then a binary search for the interval, a cubic Hermite guess from
+// the end values (s_k, u_k) and end slopes du/ds = 1/sigma (O(h^4) accurate, so Newton needs one or two
+// steps), and Newton on s_k + integral_{u_k}^{u} |p'| - s with derivative |p'(u)|, kept inside the
+// interval's bracket by bisection. No mutable state: const use from several threads is race-free (the
 // base spline's span hint is itself atomic).
 //
 // Continuity: the base's continuity in u (at a G1 joint of a Bezier path the tangent length jumps but the
@@ -38,6 +40,7 @@
 #include "rollkin/profile/spline.hpp"
 
 #include <algorithm>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -56,7 +59,7 @@ template <class S> class ArcLengthProfile {
   Domain<S> domain() const { return Domain<S>{S(0), length(), base_domain().closed}; }
   ParamKind parameter_kind() const { return ParamKind::Length; }
   int continuity() const { return visit([](const auto& b) { return b.continuity(); }); }
-  S length() const { return cumulative_.back(); }
+  S length() const { return arc_.back(); }
 
   /// x(s) and its derivatives with respect to arc length up to `order`.
   Jet<S> jet(const S& s, int order) const {
@@ -89,8 +92,8 @@ template <class S> class ArcLengthProfile {
   /// The base profile's parameter u at arc length s from its start (closed: s wraps, u in [lo, hi)).
   S base_param(const S& s) const {
     const S w = domain().wrap(s);
-    const std::size_t i = piece_at_length(w);
-    return visit([&](const auto& b) { return solve_in_piece(b, i, w); });
+    const std::size_t k = interval_at_length(w);
+    return visit([&](const auto& b) { return solve_in_interval(b, k, w); });
   }
   /// Arc length from the start to the base parameter u (inverse of base_param; closed: u wraps).
   S arc_length_at(const S& u) const {
@@ -98,7 +101,11 @@ template <class S> class ArcLengthProfile {
     const S w = d.wrap(u);
     return visit([&](const auto& b) {
       const std::size_t i = b.piece_of(w);
-      return cumulative_[i] + b.piece_length(i, b.knot(i), w);
+      const S t = (w - b.knot(i)) / (b.knot(i + 1) - b.knot(i)) * S(static_cast<int>(steps_));
+      using std::floor;
+      std::size_t j = t < S(0) ? 0 : static_cast<std::size_t>(to_double(floor(t)));
+      const std::size_t k = i * steps_ + std::min(j, steps_ - 1);
+      return arc_[k] + b.piece_length(i, node_[k], w);
     });
   }
 
@@ -121,34 +128,45 @@ template <class S> class ArcLengthProfile {
 
   void build_table() {
     visit([this](const auto& b) {
+      using B = std::decay_t<decltype(b)>;
+      steps_ = std::is_same_v<B, BezierPath<S>> ? 32 : 1;
       const std::size_t n = b.piece_count();
-      cumulative_.assign(n + 1, S(0));
-      speed_start_.resize(n);
-      speed_end_.resize(n);
+      node_.clear();
+      arc_.assign(1, S(0));
+      speed_start_.clear();
+      speed_end_.clear();
       for (std::size_t i = 0; i < n; ++i) {
-        cumulative_[i + 1] = cumulative_[i] + b.piece_length(i, b.knot(i), b.knot(i + 1));
-        speed_start_[i] = b.speed(i, b.knot(i));
-        speed_end_[i] = b.speed(i, b.knot(i + 1));
+        const S a = b.knot(i), e = b.knot(i + 1);
+        S u = a;
+        for (std::size_t j = 0; j < steps_; ++j) {
+          const S next = j + 1 == steps_ ? e : a + (e - a) * S(static_cast<int>(j + 1)) / S(static_cast<int>(steps_));
+          node_.push_back(u);
+          arc_.push_back(arc_.back() + b.piece_length(i, u, next));
+          speed_start_.push_back(b.speed(i, u));
+          speed_end_.push_back(b.speed(i, next));
+          u = next;
+        }
       }
+      node_.push_back(b.knot(n));
     });
   }
 
-  /// Piece k with s_k <= s < s_{k+1}; lengths outside [0, L] go to the end pieces.
-  std::size_t piece_at_length(const S& s) const {
-    const std::size_t n = cumulative_.size() - 1;
-    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
-    const std::size_t k = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
+  /// Interval k with s_k <= s < s_{k+1}; lengths outside [0, L] go to the end intervals.
+  std::size_t interval_at_length(const S& s) const {
+    const std::size_t n = arc_.size() - 1;
+    const auto it = std::upper_bound(arc_.begin(), arc_.end(), s);
+    const std::size_t k = it == arc_.begin() ? 0 : static_cast<std::size_t>(it - arc_.begin()) - 1;
     return std::min(k, n - 1);
   }
 
-  /// Cubic Hermite guess of u on piece i from (s_i, a, 1/sigma_a) and (s_{i+1}, b, 1/sigma_b); linear where
-  /// an end speed is zero (stationary point) or s lies outside the piece (extrapolated open ends).
-  S guess(std::size_t i, const S& a, const S& b, const S& s) const {
-    const S s0 = cumulative_[i], len = cumulative_[i + 1] - s0;
+  /// Cubic Hermite guess of u on interval k from (s_k, a, 1/sigma_a) and (s_{k+1}, b, 1/sigma_b); linear where
+  /// an end speed is zero (stationary point) or s lies outside the interval (extrapolated open ends).
+  S guess(std::size_t k, const S& a, const S& b, const S& s) const {
+    const S s0 = arc_[k], len = arc_[k + 1] - s0;
     const S t = (s - s0) / len;
-    const S sa = speed_start_[i], sb = speed_end_[i];
+    const S sa = speed_start_[k], sb = speed_end_[k];
     if (t < S(0)) return sa > S(0) ? a + (s - s0) / sa : a + (b - a) * t;
-    if (t > S(1)) return sb > S(0) ? b + (s - cumulative_[i + 1]) / sb : a + (b - a) * t;
+    if (t > S(1)) return sb > S(0) ? b + (s - arc_[k + 1]) / sb : a + (b - a) * t;
     if (!(sa > S(0)) || !(sb > S(0))) return a + (b - a) * t;
     const S t2 = t * t, t3 = t2 * t;
     const S h00 = S(2) * t3 - S(3) * t2 + S(1), h10 = t3 - S(2) * t2 + t, h01 = S(3) * t2 - S(2) * t3, h11 = t3 - t2;
@@ -156,15 +174,16 @@ template <class S> class ArcLengthProfile {
     return std::clamp(u, a, b);
   }
 
-  /// Solves s_i + integral_{knot_i}^{u} |p'| = s for u by Newton from the Hermite guess, bisecting inside
-  /// the piece's bracket whenever a step leaves it (open ends, s outside [0, L]: unbracketed Newton).
-  template <class B> S solve_in_piece(const B& b, std::size_t i, const S& s) const {
+  /// Solves s_k + integral_{u_k}^{u} |p'| = s for u by Newton from the Hermite guess, bisecting inside the
+  /// interval's bracket whenever a step leaves it (open ends, s outside [0, L]: unbracketed Newton).
+  template <class B> S solve_in_interval(const B& b, std::size_t k, const S& s) const {
     using std::abs;
-    const S a = b.knot(i), e = b.knot(i + 1);
-    const S r = s - cumulative_[i];
-    const bool bracketed = r >= S(0) && s <= cumulative_[i + 1];
+    const std::size_t i = k / steps_;  // the base's piece
+    const S a = node_[k], e = node_[k + 1];
+    const S r = s - arc_[k];
+    const bool bracketed = r >= S(0) && s <= arc_[k + 1];
     S lo = a, hi = e;
-    S u = guess(i, a, e, s);
+    S u = guess(k, a, e, s);
     const S tol = epsilon<S>() * S(8) * (abs(a) + abs(e) + (e - a));
     for (int it = 0; it < 100; ++it) {
       const S f = b.piece_length(i, a, u) - r;
@@ -179,8 +198,10 @@ template <class S> class ArcLengthProfile {
   }
 
   Base base_;
-  std::vector<S> cumulative_;               // s_k: arc length from the start to knot k
-  std::vector<S> speed_start_, speed_end_;  // |p'| at both ends of each piece (the piece's own formula)
+  std::size_t steps_ = 1;                   // table intervals per piece of the base
+  std::vector<S> node_;                     // u_k: piece i, step j is node i * steps_ + j; last: the end knot
+  std::vector<S> arc_;                      // s_k: arc length from the start to node k
+  std::vector<S> speed_start_, speed_end_;  // |p'| at both ends of interval k (its piece's own formula)
 };
 
 }  // namespace rollkin
