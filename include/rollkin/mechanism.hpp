@@ -122,6 +122,8 @@ template <class S> void Mechanism<S>::number_variables() {
       variables.push_back(Variable{p.name + "." + p.variables[j], kind, static_cast<int>(k)});
     }
     if (p.kind == PairKind::Rolling) rolling_pairs.push_back(static_cast<int>(k));
+    p.frame_a_identity = p.frame_a.is_identity();
+    p.frame_b_identity = p.frame_b.is_identity();
   }
   unknowns.clear();
   for (int i = 0; i < variable_count(); ++i) {

@@ -31,7 +31,7 @@ template <class S> class SE2 {
   static SE2 rotation(const S& angle) { return SE2(angle, Vec2<S>(S(0), S(0))); }
   static SE2 translation(const Vec2<S>& t) { return from_axis(S(1), S(0), t); }
 
-  /// Exactly the identity (joint frames placed at a link's origin are, and composing with them is skipped).
+  /// Exactly the identity (Mechanism::finalize() flags such joint frames; evaluation skips composing them).
   bool is_identity() const { return c_ == S(1) && s_ == S(0) && t_.x() == S(0) && t_.y() == S(0); }
 
   const S& cos_angle() const { return c_; }

@@ -47,6 +47,9 @@ template <class S> struct Pair {
   int contour_a = -1, contour_b = -1;  // contours on link A and link B (cam, rolling)
   std::array<std::string, 2> variables;
   int first_variable = 0;              // index of the pair's first variable in the mechanism's q
+  // Set by Mechanism::finalize(): the joint frame is exactly the identity, so evaluation skips composing
+  // with it. False (always compose) until then, so a pair evaluated on its own stays correct.
+  bool frame_a_identity = false, frame_b_identity = false;
 
   int variable_count() const { return rollkin::variable_count(kind); }
   template <class T> Pair<T> cast() const {
@@ -61,6 +64,8 @@ template <class S> struct Pair {
     p.contour_b = contour_b;
     p.variables = variables;
     p.first_variable = first_variable;
+    p.frame_a_identity = frame_a_identity;
+    p.frame_b_identity = frame_b_identity;
     return p;
   }
 };
@@ -76,30 +81,31 @@ template <class S> struct PairState {
   std::array<ContourPoint<S>, 2> contact;
 };
 
-/// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames are skipped: composing with the
-/// exact identity changes no digit, and most joints sit at a link's origin on at least one side.
-template <class S> SE2<S> in_joint_frames(const SE2<S>& frame_a, const SE2<S>& p, const SE2<S>& frame_b) {
-  const SE2<S> left = frame_a.is_identity() ? p : SE2<S>(frame_a * p);
-  return frame_b.is_identity() ? left : SE2<S>(left * frame_b.inverse());
+/// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames (flagged by finalize()) are
+/// skipped: composing with the exact identity changes no digit, and most joints sit at a link's origin on
+/// at least one side.
+template <class S> SE2<S> in_joint_frames(const Pair<S>& pair, const SE2<S>& p) {
+  const SE2<S> left = pair.frame_a_identity ? p : SE2<S>(pair.frame_a * p);
+  return pair.frame_b_identity ? left : SE2<S>(left * pair.frame_b.inverse());
 }
 
 /// Evaluates the pair into st (every field is written; contact only for cam and rolling pairs).
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
 template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours, const S* q,
                                       const std::common_type_t<S>* qdot, int order, PairState<S>& st) {
-  const Twist<S> zero = Twist<S>::Zero();
-  st.twist_rate = {zero, zero};
+  st.twist_rate[0].setZero();
+  st.twist_rate[1].setZero();
   switch (pair.kind) {
     case PairKind::Revolute:
-      st.transform = in_joint_frames(pair.frame_a, SE2<S>::rotation(q[0]), pair.frame_b);
+      st.transform = in_joint_frames(pair, SE2<S>::rotation(q[0]));
       // Ad_{F_A} (0, 0, 1) = (t_y, -t_x, 1): rotation about the joint's origin t in link A.
       st.twist[0] = Twist<S>(pair.frame_a.translation().y(), S(-pair.frame_a.translation().x()), S(1));
-      st.twist[1] = zero;
+      st.twist[1].setZero();
       return;
     case PairKind::Prismatic:
-      st.transform = in_joint_frames(pair.frame_a, SE2<S>::translation(Vec2<S>(q[0], S(0))), pair.frame_b);
+      st.transform = in_joint_frames(pair, SE2<S>::translation(Vec2<S>(q[0], S(0))));
       st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(1), S(0), S(0)));
-      st.twist[1] = zero;
+      st.twist[1].setZero();
       return;
     case PairKind::Cam:
     case PairKind::Rolling: break;

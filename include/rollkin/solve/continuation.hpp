@@ -87,8 +87,9 @@ template <class S> class Tracer {
  public:
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
-        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), open_(m) {
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), scale_(q0.size()), open_(m) {
     rate_(driver) = S(1);
+    for (Eigen::Index i = 0; i < scale_.size(); ++i) scale_(i) = m.variable_scale(static_cast<int>(i));
     start_ = solve_position(m_, q_, sd_);
     solve_velocity(m_, sd_, rate_, v_);
     base_condition_ = start_.condition;
@@ -183,7 +184,7 @@ template <class S> class Tracer {
     using std::abs;
     using std::max;
     S d(0);
-    for (Eigen::Index i = 0; i < a.size(); ++i) d = max(d, S(abs(a(i) - b(i)) / m_.variable_scale(static_cast<int>(i))));
+    for (Eigen::Index i = 0; i < a.size(); ++i) d = max(d, S(abs(a(i) - b(i)) / scale_(i)));
     return d;
   }
 
@@ -238,6 +239,7 @@ template <class S> class Tracer {
   int var_;
   const ContinuationSettings<S>& cfg_;
   VectorX<S> q_, q_prev_, trial_, tangent_, v_, v_prev_, rate_;
+  VectorX<S> scale_;  // m.variable_scale of every variable, for scaled_distance
   OpenDomains<S> open_;
   bool has_prev_ = false;
   SolveReport<S> start_;

@@ -84,16 +84,11 @@ template <class S> struct SolveData {
   /// column-pivoted QR inside COD): cheap, and it grows like 1/sigma_min toward a singular pose.
   void factor(int rows) {
     using std::abs;
-    using std::max;
-    using std::min;
     const auto n = ju.cols();
     if (rows == n && n > 0) {
       const bool nonzero_pivots = lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); });
-      S largest = lu.pivot(0), smallest = largest;
-      for (Eigen::Index i = 1; i < n; ++i) {
-        largest = max(largest, lu.pivot(i));
-        smallest = min(smallest, lu.pivot(i));
-      }
+      const S& largest = lu.largest_pivot();
+      const S& smallest = lu.smallest_pivot();
       if (nonzero_pivots && smallest > largest * epsilon<S>() * S(static_cast<int>(n))) {
         lu_active = true;
         rank = static_cast<int>(n);

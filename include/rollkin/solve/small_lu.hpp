@@ -65,6 +65,9 @@ template <class S> class SmallLU {
     using std::abs;
     return abs(lu_[static_cast<std::size_t>(row_[i] * n_ + i)]);
   }
+  /// max_i |u_ii| and min_i |u_ii| of the last successful compute().
+  const S& largest_pivot() const { return largest_pivot_; }
+  const S& smallest_pivot() const { return smallest_pivot_; }
   Eigen::Index size() const { return n_; }
 
  private:
@@ -75,6 +78,8 @@ template <class S> class SmallLU {
   /// Doolittle elimination with row pivoting (Golub & Van Loan, Algorithm 3.4.1) on the row-major copy.
   template <int N, class M> bool compute_n(const M& a) {
     using std::abs;
+    using std::max;
+    using std::min;
     const Eigen::Index n = dim<N>();
     S* lu = lu_.data();
     Eigen::Index* row = row_.data();
@@ -96,6 +101,9 @@ template <class S> class SmallLU {
           p = i;
         }
       }
+      // best = |u_kk|: the pivot ratio for the condition estimate comes for free.
+      largest_pivot_ = k == 0 ? best : max(largest_pivot_, best);
+      smallest_pivot_ = k == 0 ? best : min(smallest_pivot_, best);
       if (best == S(0)) return false;
       std::swap(row[p], row[k]);
       const S* pivot_row = lu + row[k] * n;
@@ -139,6 +147,7 @@ template <class S> class SmallLU {
   Eigen::Index n_;
   std::vector<S> lu_;                 // row-major n x n: L below the diagonal (unit diagonal implied), U on and above
   std::vector<Eigen::Index> row_;     // row_[k]: the stored row that is the k-th row of P A
+  S largest_pivot_ = S(0), smallest_pivot_ = S(0);
 };
 
 }  // namespace rollkin
