@@ -268,3 +268,32 @@ BOOST_AUTO_TEST_CASE(contact_located_when_values_are_omitted) {
   // A contact pair on the spanning tree cannot be located: "values" required.
   expect_error("paper_no_values.json", paper_with("\"values\": [0, 180], ", ""), "pairs[1]", "\"values\" required");
 }
+
+// ---- bad sample files through the scene (CGAL validation at the input boundary) ---------------------------
+
+BOOST_AUTO_TEST_CASE(duplicate_and_self_intersecting_samples_name_the_file_and_samples) {
+  // Disk 3 of the paper example as 64 samples of the unit circle, then spoiled two ways.
+  auto circle = [](int n, int duplicate_at, bool figure_eight) {
+    std::ostringstream os;
+    os.precision(17);
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * 3.141592653589793 * k / n;
+      if (figure_eight) os << std::sin(t) << " " << std::sin(2 * t) / 2 << "\n";  // lemniscate: crosses at 0
+      else os << std::cos(t) << " " << std::sin(t) << "\n";
+      if (k == duplicate_at) os << std::cos(t) << " " << std::sin(t) << "\n";
+    }
+    return os.str();
+  };
+  auto scene_with = [](const std::string& file) {
+    return paper_with("{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 1}",
+                      "{\"name\": \"rim\", \"type\": \"samples\", \"file\": \"" + file + "\", \"closed\": true}");
+  };
+  write_temp("disk_duplicate.txt", circle(64, 10, false));
+  const std::string dup = error_for("dup_samples.json", scene_with("disk_duplicate.txt"));
+  BOOST_TEST(contains(dup, "disk_duplicate.txt"));
+  BOOST_TEST(contains(dup, "samples 10 and 11 coincide"));
+  write_temp("disk_eight.txt", circle(64, -1, true));
+  const std::string eight = error_for("eight_samples.json", scene_with("disk_eight.txt"));
+  BOOST_TEST(contains(eight, "disk_eight.txt"));
+  BOOST_TEST(contains(eight, "cross"));
+}
