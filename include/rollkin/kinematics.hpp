@@ -128,8 +128,7 @@ template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qd
         // lambda' = -Ad_{E^-1} mu:  lambda'dot = -Ad_{E^-1} mudot + ad_W lambda',  W = sum lambda' qdot
         Twist<S> w = Twist<S>::Zero();
         for (int j = 0; j < p.variable_count(); ++j) w += tw[j] * qdot(p.first_variable + j);
-        const SE2<S> inv = st.transform.inverse();
-        for (int j = 0; j < 2; ++j) tw_rate[j] = -inv.adjoint(st.twist_rate[j]) + lie_bracket<S>(w, tw[j]);
+        for (int j = 0; j < 2; ++j) tw_rate[j] = -step.adjoint(st.twist_rate[j]) + lie_bracket<S>(w, tw[j]);  // step = E^-1
       }
       Twist<S> step_velocity = Twist<S>::Zero();
       for (int j = 0; j < p.variable_count(); ++j) {
@@ -156,17 +155,11 @@ template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qd
 /// World pose of every link, from the spanning tree (pairs evaluated at q).
 template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
   std::vector<SE2<S>> pose(m.links.size());
-  std::vector<bool> done(m.links.size(), false);
-  done[m.ground] = true;
-  // Links are reached in BFS order through tree[]; resolve lazily.
-  for (std::size_t pass = 0; pass < m.links.size(); ++pass) {
-    for (std::size_t i = 0; i < m.links.size(); ++i) {
-      if (done[i] || !done[m.tree[i].parent]) continue;
-      const LoopEdge e = m.tree[i].edge;
-      const SE2<S>& E = d.pairs[e.pair].transform;
-      pose[i] = pose[m.tree[i].parent] * (e.forward ? E : E.inverse());
-      done[i] = true;
-    }
+  for (int i : m.tree_order) {  // parents before children; the ground (first) keeps the identity
+    if (i == m.ground) continue;
+    const LoopEdge e = m.tree[i].edge;
+    const SE2<S>& E = d.pairs[e.pair].transform;
+    pose[i] = pose[m.tree[i].parent] * (e.forward ? E : E.inverse());
   }
   return pose;
 }

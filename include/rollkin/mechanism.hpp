@@ -46,6 +46,7 @@ template <class S> class Mechanism {
   std::vector<Variable> variables;
   std::vector<std::vector<LoopEdge>> loops;
   std::vector<TreeEdge> tree;       // per link
+  std::vector<int> tree_order;      // links in breadth-first order from the ground (parents first)
   std::vector<int> unknowns;        // indices into q that are not drivers
   std::vector<int> rolling_pairs;   // pairs with an arc-length row
   S length_scale = S(1);            // characteristic size, for scaling lengths in norms
@@ -77,6 +78,7 @@ template <class S> class Mechanism {
     m.variables = variables;
     m.loops = loops;
     m.tree = tree;
+    m.tree_order = tree_order;
     m.unknowns = unknowns;
     m.rolling_pairs = rolling_pairs;
     m.length_scale = scalar_cast<T>(length_scale);
@@ -154,6 +156,7 @@ template <class S> void Mechanism<S>::build_tree_and_loops() {
       queue.push_back(other);
     }
   }
+  tree_order = queue;
   for (int i = 0; i < n; ++i)
     if (depth[i] < 0) throw std::invalid_argument("link '" + links[i].name + "' is not connected to the ground");
 

@@ -160,10 +160,7 @@ std::string draw_svg(const OutputContext& ctx) {
       const Domain<double> dom = c.domain();
       const int n = 200;
       std::vector<Eigen::Vector2d> pts;
-      for (int i = 0; i < n; ++i) {
-        const double t = dom.closed ? dom.lo + dom.period() * i / n : dom.lo + (dom.hi - dom.lo) * i / (n - 1);
-        pts.push_back(lp[c.link()].act(c.jet(t, 0).p));
-      }
+      for (int i = 0; i < n; ++i) pts.push_back(lp[c.link()].act(c.jet(dom.sample(i, n), 0).p));
       io::Stroke st;
       st.color = c.link() == m.ground ? "#000000" : io::palette_color(static_cast<std::size_t>(c.link()));
       st.width = 1.6;

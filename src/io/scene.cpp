@@ -702,7 +702,7 @@ class SceneReader {
         closed[j] = d.closed;
         const int n = kContactSamples;
         for (int i = 0; i < n; ++i) {
-          const double t = d.closed ? d.lo + d.period() * i / n : d.lo + (d.hi - d.lo) * i / (n - 1);
+          const double t = d.sample(i, n);
           u[j].push_back(t);
           pts[j].push_back(pose[c.link()].act(c.jet(t, 0).p));
         }

@@ -43,6 +43,9 @@ template <class S> struct Domain {
     using std::floor;
     return u - period() * floor((u - lo) / period());
   }
+  /// Parameter of sample i of n equally spaced in u: an open domain includes both ends, a closed one covers
+  /// one period without repeating its first point.
+  S sample(int i, int n) const { return lo + (hi - lo) * S(i) / S(closed ? n : n - 1); }
   /// Number of whole periods between lo and u (closed contours): u = wrap(u) + turns(u) * period().
   S turns(const S& u) const {
     using std::floor;

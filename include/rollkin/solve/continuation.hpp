@@ -76,11 +76,6 @@ template <class S> struct OpenDomains {
   }
 };
 
-/// First contact variable outside its open contour's domain, or -1.
-template <class S> int domain_violation(const Mechanism<S>& m, const VectorX<S>& q) {
-  return OpenDomains<S>(m).violation(q);
-}
-
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
 /// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
@@ -180,13 +175,8 @@ template <class S> class Tracer {
     return remaining < S(0) ? S(-len) : len;
   }
 
-  S scaled_distance(const VectorX<S>& a, const VectorX<S>& b) const {
-    using std::abs;
-    using std::max;
-    S d(0);
-    for (Eigen::Index i = 0; i < a.size(); ++i) d = max(d, S(abs(a(i) - b(i)) / scale_(i)));
-    return d;
-  }
+  /// Max-norm of a - b in scaled variables (the expression a - b is read entry by entry, no temporary).
+  S scaled_distance(const VectorX<S>& a, const VectorX<S>& b) const { return scaled_max_norm<S>(a - b, scale_); }
 
   /// The step collapsed at the current pose: a dead point if the Jacobian of the unknowns has become
   /// ill-conditioned (condition grown by ill_conditioned over the sweep's start, or above eps^-1/3), else

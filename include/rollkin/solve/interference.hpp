@@ -91,10 +91,8 @@ template <class S> std::vector<Vec2<double>> contour_samples(const Contour<S>& c
   const Domain<S> d = c.domain();
   std::vector<Vec2<double>> pts;
   pts.reserve(static_cast<std::size_t>(n));
-  const S span = d.hi - d.lo;
-  const S denom = d.closed ? S(n) : S(n - 1);
   for (int k = 0; k < n; ++k) {
-    const Vec2<S> p = c.jet(d.lo + span * S(k) / denom, 0).p;
+    const Vec2<S> p = c.jet(d.sample(k, n), 0).p;
     pts.emplace_back(to_double(p.x()), to_double(p.y()));
   }
   return pts;

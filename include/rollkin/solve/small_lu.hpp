@@ -60,11 +60,6 @@ template <class S> class SmallLU {
     }
   }
 
-  /// |u_ii|, the pivots of the upper factor (for the pivot-ratio condition estimate).
-  S pivot(Eigen::Index i) const {
-    using std::abs;
-    return abs(lu_[static_cast<std::size_t>(row_[i] * n_ + i)]);
-  }
   /// max_i |u_ii| and min_i |u_ii| of the last successful compute().
   const S& largest_pivot() const { return largest_pivot_; }
   const S& smallest_pivot() const { return smallest_pivot_; }
