@@ -201,7 +201,7 @@ BOOST_AUTO_TEST_CASE(dead_point_located_to_50_digits) {
   auto rate = [&](const M& xx, VectorX<M>& pose) {  // dtheta2/dx at x = xx
     pose(x) = xx;
     const auto rep = solve_position(by_x, pose, sd);
-    BOOST_TEST_REQUIRE(rep.ok());
+    BOOST_TEST_REQUIRE(rep.ok(), to_string(rep.status) << " at x = " << xx.str(20) << ": " << rep.detail);
     return M(solve_velocity(by_x, sd, one)(theta2));
   };
   M x0 = q(x), x1 = q(x) + M(1) / M(1000);

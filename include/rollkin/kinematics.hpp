@@ -16,6 +16,8 @@
 
 #include <Eigen/Dense>
 
+#include <optional>
+
 namespace rollkin {
 
 template <class S> using VectorX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
@@ -35,7 +37,19 @@ template <class S> struct KinematicsData {
         residual(m.equation_count()),
         jacobian(m.equation_count(), m.variable_count()),
         bias(m.equation_count()),
-        reference(VectorX<S>::Zero(m.variable_count())) {}
+        reference(VectorX<S>::Zero(m.variable_count())),
+        origins_(m.variable_count()) {}
+
+  /// Arc length on contour c from reference(i) to u (eq. 4). The origin's primitive s(reference(i)) is
+  /// evaluated once and kept until reference(i) changes, so a solve pays one primitive per contact.
+  S arc_length_from_reference(const Contour<S>& c, int i, const S& u) {
+    std::optional<ArcOrigin<S>>& o = origins_[static_cast<std::size_t>(i)];
+    if (!o || o->u0 != reference(i)) o = c.arc_origin(reference(i));
+    return c.arc_length_from(*o, u);
+  }
+
+ private:
+  std::vector<std::optional<ArcOrigin<S>>> origins_;  // per variable: used for the rolling pairs' ones
 };
 
 /// Evaluates every pair at q (and qdot when order >= 3, for accelerations).
@@ -102,8 +116,8 @@ template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX
     const Pair<S>& p = m.pairs[k];
     const int i = p.first_variable;
     const PairState<S>& st = d.pairs[k];
-    d.residual(row) = m.contours[p.contour_a].arc_length(d.reference(i), q(i)) +
-                      m.contours[p.contour_b].arc_length(d.reference(i + 1), q(i + 1));
+    d.residual(row) = d.arc_length_from_reference(m.contours[p.contour_a], i, q(i)) +
+                      d.arc_length_from_reference(m.contours[p.contour_b], i + 1, q(i + 1));
     d.jacobian(row, i) = st.contact[0].speed;
     d.jacobian(row, i + 1) = st.contact[1].speed;
     ++row;

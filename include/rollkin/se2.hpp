@@ -7,6 +7,8 @@
 
 #include "rollkin/scalar.hpp"
 
+#include <type_traits>
+
 namespace rollkin {
 
 template <class S> using Twist = Vec3<S>;
@@ -38,7 +40,17 @@ template <class S> class SE2 {
   const S& sin_angle() const { return s_; }
   const Vec2<S>& translation() const { return t_; }
   S angle() const {
+    using std::abs;
     using std::atan2;
+    if constexpr (std::is_same_v<S, double>) {
+      // Near the identity, where every closed loop is evaluated: atan(t), t = s/c, by its series
+      // t - t^3/3 + t^5/5 - t^7/7, whose truncation t^9/9 is below eps/9 relative for |t| <= eps^(1/8) = 0.011;
+      // several times cheaper than the libm call.
+      if (c_ > 0 && abs(s_) <= 0.011 * c_) {
+        const double t = s_ / c_, t2 = t * t;
+        return t * (1 + t2 * (-1.0 / 3 + t2 * (1.0 / 5 - t2 / 7)));
+      }
+    }
     return atan2(s_, c_);
   }
 

@@ -19,6 +19,7 @@
 #include "rollkin/profile/profile.hpp"
 
 #include <array>
+#include <limits>
 #include <type_traits>
 #include <string>
 
@@ -79,6 +80,9 @@ template <class S> struct PairState {
   std::array<Twist<S>, 2> twist_rate;
   // Contact geometry, filled for cam and rolling pairs.
   std::array<ContourPoint<S>, 2> contact;
+  // The variable a revolute or prismatic pair was last evaluated at (NaN: never). Its state depends on that
+  // value only, and a driver keeps its value over a pose's Newton iterations.
+  S joint_value = std::numeric_limits<S>::quiet_NaN();
 };
 
 /// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames (flagged by finalize()) are
@@ -89,20 +93,24 @@ template <class S> SE2<S> in_joint_frames(const Pair<S>& pair, const SE2<S>& p) 
   return pair.frame_b_identity ? left : SE2<S>(left * pair.frame_b.inverse());
 }
 
-/// Evaluates the pair into st (every field is written; contact only for cam and rolling pairs).
+/// Evaluates the pair into st (every field is written; contact only for cam and rolling pairs). A joint
+/// pair whose variable has not changed since st was last written is left as it is.
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
 template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours, const S* q,
                                       const std::common_type_t<S>* qdot, int order, PairState<S>& st) {
+  if (!is_contact(pair.kind) && q[0] == st.joint_value) return;
   st.twist_rate[0].setZero();
   st.twist_rate[1].setZero();
   switch (pair.kind) {
     case PairKind::Revolute:
+      st.joint_value = q[0];
       st.transform = in_joint_frames(pair, SE2<S>::rotation(q[0]));
       // Ad_{F_A} (0, 0, 1) = (t_y, -t_x, 1): rotation about the joint's origin t in link A.
       st.twist[0] = Twist<S>(pair.frame_a.translation().y(), S(-pair.frame_a.translation().x()), S(1));
       st.twist[1].setZero();
       return;
     case PairKind::Prismatic:
+      st.joint_value = q[0];
       st.transform = in_joint_frames(pair, SE2<S>::translation(Vec2<S>(q[0], S(0))));
       st.twist[0] = pair.frame_a.adjoint(Twist<S>(S(1), S(0), S(0)));
       st.twist[1].setZero();

@@ -87,6 +87,8 @@ template <class S> class ArcLengthProfile {
   }
 
   S arc_length(const S& s0, const S& s1) const { return s1 - s0; }
+  bool has_arc_length_primitive() const { return true; }
+  S arc_length_primitive(const S& s) const { return s; }
   S param_at_arc_length(const S& s0, const S& ds) const { return s0 + ds; }
 
   /// The base profile's parameter u at arc length s from its start (closed: s wraps, u in [lo, hi)).

@@ -24,6 +24,7 @@
 #include "rollkin/profile/quadrature.hpp"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -139,6 +140,8 @@ template <class S> class BezierPath {
   }
 
   S arc_length(const S& u0, const S& u1) const { return arc_.between(*this, domain(), u0, u1); }
+  bool has_arc_length_primitive() const { return false; }
+  S arc_length_primitive(const S& u) const { return arc_.primitive(*this, domain(), u); }
   S param_at_arc_length(const S& u0, const S& ds) const { return arc_.param_at(*this, domain(), u0, ds); }
   S total_length() const { return arc_.total(); }
 
@@ -222,9 +225,22 @@ template <class S> class BezierPath {
     return h;
   }
 
-  static Vec3<S> de_casteljau(std::vector<Vec3<S>> c, const S& t) {
-    for (std::size_t level = c.size(); level-- > 1;)
-      for (std::size_t k = 0; k < level; ++k) c[k] = (S(1) - t) * c[k] + t * c[k + 1];
+  /// De Casteljau's algorithm on a working copy: on the stack up to degree 7 (every conic and cubic), on the
+  /// heap beyond, so evaluation (called at every quadrature node) does not allocate for usual paths.
+  static Vec3<S> de_casteljau(const std::vector<Vec3<S>>& points, const S& t) {
+    constexpr std::size_t kInline = 8;
+    std::array<Vec3<S>, kInline> inline_copy;
+    std::vector<Vec3<S>> heap_copy;
+    Vec3<S>* c = inline_copy.data();
+    if (points.size() > kInline) {
+      heap_copy = points;
+      c = heap_copy.data();
+    } else {
+      std::copy(points.begin(), points.end(), c);
+    }
+    const S s = S(1) - t;
+    for (std::size_t level = points.size(); level-- > 1;)
+      for (std::size_t k = 0; k < level; ++k) c[k] = s * c[k] + t * c[k + 1];
     return c[0];
   }
 

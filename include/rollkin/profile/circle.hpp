@@ -31,6 +31,8 @@ template <class S> class Circle {
     return j;
   }
   S arc_length(const S& u0, const S& u1) const { return r_ * (u1 - u0); }
+  bool has_arc_length_primitive() const { return true; }
+  S arc_length_primitive(const S& u) const { return r_ * u; }
   S param_at_arc_length(const S& u0, const S& ds) const { return u0 + ds / r_; }
 
   template <class T> Circle<T> cast() const {

@@ -19,6 +19,14 @@ template <class S> class Ellipse {
   Ellipse(const S& semi_x, const S& semi_y, ArcLengthMethod method = {})
       : a_(semi_x), b_(semi_y), domain_{S(0), S(2) * pi<S>(), true}, method_(method) {
     if (!(semi_x > S(0)) || !(semi_y > S(0))) throw std::invalid_argument("ellipse: semi-axes must be positive");
+    // The constants of s(t), computed once: the larger semi-axis, e, and for A >= B the shift and E(pi/2, e).
+    using std::sqrt;
+    const bool wide = a_ >= b_;
+    major_ = wide ? a_ : b_;
+    const S ratio = (wide ? b_ : a_) / major_;
+    e_ = sqrt(S(1) - ratio * ratio);
+    shift_ = wide ? S(pi<S>() / S(2)) : S(0);
+    complete_ = wide ? S(boost::math::ellint_2(e_, shift_)) : S(0);
   }
 
   const S& semi_x() const { return a_; }
@@ -37,8 +45,11 @@ template <class S> class Ellipse {
     if (order >= 3) j.d3 = Vec2<S>(a_ * s, -b_ * c);
     return j;
   }
+  bool has_arc_length_primitive() const { return method_.closed_form; }
+  /// s(t) = A [E(t - pi/2, e) + E(pi/2, e)] or B E(t, e) (see the top of this file).
+  S arc_length_primitive(const S& t) const { return major_ * (boost::math::ellint_2(e_, S(t - shift_)) + complete_); }
   S arc_length(const S& t0, const S& t1) const {
-    if (method_.closed_form) return primitive(t1) - primitive(t0);
+    if (method_.closed_form) return arc_length_primitive(t1) - arc_length_primitive(t0);
     return arc_length_by_quadrature(*this, t0, t1, method_.rule);
   }
   S param_at_arc_length(const S& t0, const S& ds) const { return param_at_arc_length_newton(*this, t0, ds); }
@@ -46,18 +57,8 @@ template <class S> class Ellipse {
   template <class T> Ellipse<T> cast() const { return Ellipse<T>(scalar_cast<T>(a_), scalar_cast<T>(b_), method_); }
 
  private:
-  S primitive(const S& t) const {
-    using boost::math::ellint_2;
-    using std::sqrt;
-    if (a_ >= b_) {
-      const S e = sqrt(S(1) - (b_ / a_) * (b_ / a_));
-      return a_ * (ellint_2(e, t - pi<S>() / S(2)) + ellint_2(e, pi<S>() / S(2)));
-    }
-    const S e = sqrt(S(1) - (a_ / b_) * (a_ / b_));
-    return b_ * ellint_2(e, t);
-  }
-
   S a_, b_;
+  S major_, e_, shift_, complete_;  // s(t) = major (E(t - shift, e) + complete)
   Domain<S> domain_;
   ArcLengthMethod method_;
 };

@@ -11,6 +11,8 @@
 //   Jet<S> jet(const S& u, int order) const;   // p and its derivatives d^k p / du^k for k <= order <= 3
 //   S arc_length(const S& u0, const S& u1) const;        // signed arc length from u0 to u1 (eq. 4)
 //   S param_at_arc_length(const S& u0, const S& ds) const; // inverse: u with arc_length(u0, u) = ds
+//   bool has_arc_length_primitive() const;     // whether s(u) below is available (closed form or table)
+//   S arc_length_primitive(const S& u) const;  // s(u), arc_length(u0, u1) = s(u1) - s(u0)
 //   template <class T> Type<T> cast() const;   // same profile in another scalar type
 //
 // The contact pair (pair/contact.hpp) needs only the jet and the arc length; everything else below is

@@ -21,6 +21,8 @@ template <class S> class Line {
     return j;
   }
   S arc_length(const S& u0, const S& u1) const { return u1 - u0; }
+  bool has_arc_length_primitive() const { return true; }
+  S arc_length_primitive(const S& u) const { return u; }
   S param_at_arc_length(const S& u0, const S& ds) const { return u0 + ds; }
 
   template <class T> Line<T> cast() const { return Line<T>(scalar_cast<T>(domain_.lo), scalar_cast<T>(domain_.hi)); }

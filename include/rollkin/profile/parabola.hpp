@@ -36,6 +36,8 @@ template <class S> class Parabola {
     const S t = S(2) * a_ * x;
     return x / S(2) * sqrt(S(1) + t * t) + asinh(t) / (S(4) * a_);
   }
+  /// The closed form has a primitive; the quadrature variants (kept for comparison) do not.
+  bool has_arc_length_primitive() const { return method_.closed_form; }
   S arc_length(const S& x0, const S& x1) const {
     if (method_.closed_form) return arc_length_primitive(x1) - arc_length_primitive(x0);
     return arc_length_by_quadrature(*this, x0, x1, method_.rule);

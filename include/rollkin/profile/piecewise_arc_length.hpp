@@ -3,7 +3,8 @@
 // The table holds s_k = arc length from the first knot to knot k, built once at construction by quadrature
 // of each piece. Then
 //   s(u)            = s_i + integral_{u_i}^{u} |p'| du         (u in piece i: one small quadrature),
-//   arc_length(a,b) = s(b) - s(a)    (one quadrature only when a and b lie in the same piece),
+//   arc_length(a,b) = s(b) - s(a)    (one quadrature only when a and b lie in the same piece; s(u) is the
+//                                     profile's arc-length primitive),
 //   u(s)            = bisection of the table for the piece, then safeguarded Newton inside it.
 // Closed profiles add whole turns: s(u + period) = s(u) + total length.
 //
@@ -37,14 +38,19 @@ template <class S> class PiecewiseArcLength {
   S total() const { return cumulative_.back(); }
   const std::vector<S>& cumulative() const { return cumulative_; }
 
-  /// Signed arc length from u0 to u1.
+  /// Signed arc length from u0 to u1 (one quadrature inside one piece, else the primitive's difference).
   template <class Pieces>
   S between(const Pieces& pieces, const Domain<S>& domain, const S& u0, const S& u1) const {
-    const S t0 = domain.turns(u0), t1 = domain.turns(u1);
     const S w0 = domain.wrap(u0), w1 = domain.wrap(u1);
-    const std::size_t i0 = pieces.piece_of(w0), i1 = pieces.piece_of(w1);
-    if (t0 == t1 && i0 == i1) return pieces.piece_length(i0, w0, w1);
-    return (t1 - t0) * total() + from_start(pieces, i1, w1) - from_start(pieces, i0, w0);
+    const std::size_t i0 = pieces.piece_of(w0);
+    if (domain.turns(u0) == domain.turns(u1) && i0 == pieces.piece_of(w1)) return pieces.piece_length(i0, w0, w1);
+    return primitive(pieces, domain, u1) - primitive(pieces, domain, u0);
+  }
+
+  /// s(u): arc length from the first knot, whole turns included (closed profiles).
+  template <class Pieces> S primitive(const Pieces& pieces, const Domain<S>& domain, const S& u) const {
+    const S w = domain.wrap(u);
+    return domain.turns(u) * total() + from_start(pieces, pieces.piece_of(w), w);
   }
 
   /// u such that between(u0, u) = ds.

@@ -26,11 +26,23 @@ template <class S>
 using ProfileShape = std::variant<Line<S>, Circle<S>, Parabola<S>, Ellipse<S>, SampledProfile<S>, BezierPath<S>,
                                   ArcLengthProfile<S>>;
 
+/// A fixed origin of arc length on a contour (see Contour::arc_origin).
+template <class S> struct ArcOrigin {
+  S u0;
+  S primitive;         // s(u0), when has_primitive
+  bool has_primitive;  // false: arc lengths from u0 are integrated (quadrature variants of analytic curves)
+};
+
 template <class S> class Contour {
  public:
   using Scalar = S;
   Contour(std::string name, int link, ProfileShape<S> shape, SE2<S> placement, bool reversed)
-      : name_(std::move(name)), link_(link), shape_(std::move(shape)), placement_(placement), reversed_(reversed) {}
+      : name_(std::move(name)),
+        link_(link),
+        shape_(std::move(shape)),
+        placement_(placement),
+        placed_(!placement.is_identity()),
+        reversed_(reversed) {}
 
   const std::string& name() const { return name_; }
   int link() const { return link_; }
@@ -46,13 +58,14 @@ template <class S> class Contour {
   ParamKind parameter_kind() const { return visit([](const auto& p) { return p.parameter_kind(); }); }
   int continuity() const { return visit([](const auto& p) { return p.continuity(); }); }
 
-  /// Jet in the LINK frame, material on the left.
+  /// Jet in the LINK frame, material on the left (an identity placement is skipped: it changes no digit).
   Jet<S> jet(const S& u, int order) const {
     Jet<S> j = visit([&](const auto& p) { return p.jet(reversed_ ? S(-u) : u, order); });
     if (reversed_) {
       j.d1 = -j.d1;
       j.d3 = -j.d3;
     }
+    if (!placed_) return j;
     j.p = placement_.act(j.p);
     j.d1 = placement_.rotate(j.d1);
     if (order >= 2) j.d2 = placement_.rotate(j.d2);
@@ -63,6 +76,17 @@ template <class S> class Contour {
   S arc_length(const S& u0, const S& u1) const {
     if (!reversed_) return visit([&](const auto& p) { return p.arc_length(u0, u1); });
     return -visit([&](const auto& p) { return p.arc_length(S(-u0), S(-u1)); });
+  }
+  /// Origin u0 of arc lengths measured from a fixed parameter (a rolling pair's assembly contact), with the
+  /// primitive s(u0) evaluated once when the profile has one (closed form or cumulative table).
+  ArcOrigin<S> arc_origin(const S& u0) const {
+    const bool has = visit([](const auto& p) { return p.has_arc_length_primitive(); });
+    return ArcOrigin<S>{u0, has ? primitive(u0) : S(0), has};
+  }
+  /// Signed arc length from the origin to u (eq. 4): s(u) - s(u0) from the primitive, else by quadrature
+  /// from u0.
+  S arc_length_from(const ArcOrigin<S>& origin, const S& u) const {
+    return origin.has_primitive ? S(primitive(u) - origin.primitive) : arc_length(origin.u0, u);
   }
   S param_at_arc_length(const S& u0, const S& ds) const {
     if (!reversed_) return visit([&](const auto& p) { return p.param_at_arc_length(u0, ds); });
@@ -99,12 +123,18 @@ template <class S> class Contour {
 
  private:
   template <class F> auto visit(F&& f) const { return std::visit(std::forward<F>(f), shape_); }
+  /// The profile's arc-length primitive in this contour's parameter: reversed, s(u) = -s_profile(-u).
+  S primitive(const S& u) const {
+    if (!reversed_) return visit([&](const auto& p) { return p.arc_length_primitive(u); });
+    return -visit([&](const auto& p) { return p.arc_length_primitive(S(-u)); });
+  }
   static S mid_span(const SampledProfile<S>& p, std::size_t k) { return (p.knot(k) + p.knot(k + 1)) / S(2); }
 
   std::string name_;
   int link_;
   ProfileShape<S> shape_;
   SE2<S> placement_;
+  bool placed_;  // placement is not the identity
   bool reversed_;
 };
 

@@ -101,6 +101,8 @@ template <class S> class SampledProfile {
   }
 
   S arc_length(const S& u0, const S& u1) const { return arc_.between(*this, domain(), u0, u1); }
+  bool has_arc_length_primitive() const { return true; }
+  S arc_length_primitive(const S& u) const { return arc_.primitive(*this, domain(), u); }
   S param_at_arc_length(const S& u0, const S& ds) const { return arc_.param_at(*this, domain(), u0, ds); }
   S total_length() const { return arc_.total(); }
 

@@ -82,9 +82,9 @@ template <class S> class Tracer {
  public:
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
-        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), scale_(q0.size()), open_(m) {
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), open_(m) {
     rate_(driver) = S(1);
-    for (Eigen::Index i = 0; i < scale_.size(); ++i) scale_(i) = m.variable_scale(static_cast<int>(i));
+    for (Eigen::Index i = 0; i < weight_.size(); ++i) weight_(i) = S(1) / m.variable_scale(static_cast<int>(i));
     start_ = solve_position(m_, q_, sd_);
     solve_velocity(m_, sd_, rate_, v_);
     base_condition_ = start_.condition;
@@ -94,18 +94,19 @@ template <class S> class Tracer {
   const VectorX<S>& q() const { return q_; }
   const VectorX<S>& v() const { return v_; }
 
-  /// Advances to the driver value `target`. Returns Converged (iterations summed over the sub-steps), or the
-  /// limit met, with the state left at the last pose reached.
+  /// Advances to the driver value `target`. Returns Converged (iterations and evaluations summed over the
+  /// sub-steps), or the limit met, with the state left at the last pose reached.
   SolveReport<S> advance(const S& target) {
     using std::abs;
     S h = clamp_step(target - q_(var_));
     SolveReport<S> rep = start_;
-    int iterations = 0;
+    int iterations = 0, evaluations = 0;
     while (q_(var_) != target) {
       // Go to the target when it is within the step or would leave a sliver behind.
       const S t = abs(target - q_(var_)) <= abs(h) * (S(1) + S(1) / S(64)) ? target : S(q_(var_) + h);
       const bool accepted = try_step(t, rep);
-      iterations += rep.iterations + 1;
+      iterations += rep.iterations;
+      evaluations += rep.evaluations;
       if (accepted) {
         const int out = open_.violation(trial_);
         if (out >= 0) return locate_domain_exit(t, out);
@@ -117,6 +118,7 @@ template <class S> class Tracer {
       if (abs(h) < cfg_.min_step) return classify_stop(rep);
     }
     rep.iterations = iterations;
+    rep.evaluations = evaluations;
     return rep;
   }
 
@@ -176,7 +178,7 @@ template <class S> class Tracer {
   }
 
   /// Max-norm of a - b in scaled variables (the expression a - b is read entry by entry, no temporary).
-  S scaled_distance(const VectorX<S>& a, const VectorX<S>& b) const { return scaled_max_norm<S>(a - b, scale_); }
+  S scaled_distance(const VectorX<S>& a, const VectorX<S>& b) const { return weighted_max_norm<S>(a - b, weight_); }
 
   /// The step collapsed at the current pose: a dead point if the Jacobian of the unknowns has become
   /// ill-conditioned (condition grown by ill_conditioned over the sweep's start, or above eps^-1/3), else
@@ -229,39 +231,29 @@ template <class S> class Tracer {
   int var_;
   const ContinuationSettings<S>& cfg_;
   VectorX<S> q_, q_prev_, trial_, tangent_, v_, v_prev_, rate_;
-  VectorX<S> scale_;  // m.variable_scale of every variable, for scaled_distance
+  VectorX<S> weight_;  // 1 / m.variable_scale of every variable, for scaled_distance
   OpenDomains<S> open_;
   bool has_prev_ = false;
   SolveReport<S> start_;
   S base_condition_;
 };
 
-}  // namespace detail
-
-/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
-/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
-template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
-                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
-                                        const ContinuationSettings<S>& cfg = {}) {
-  SweepResult<S> out;
-  out.assembly = assembly;
-  out.poses.resize(inputs.size());
+/// The sweep proper: traces the inputs above the assembly input upwards and those below downwards.
+template <class S> void trace_sides(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, int driver,
+                                    const std::vector<S>& inputs, const ContinuationSettings<S>& cfg,
+                                    SweepResult<S>& out) {
   const int var = m.drivers[driver];
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    out.poses[i].input = inputs[i];
-    out.poses[i].report.status = assembly.ok() ? SolveStatus::NotReached : assembly.status;
-  }
-  if (!assembly.ok()) return out;
-
   // Requested inputs on each side of the assembly input, nearest first.
   std::vector<std::size_t> up, down;
+  up.reserve(inputs.size());
+  down.reserve(inputs.size());
   for (std::size_t i = 0; i < inputs.size(); ++i) (inputs[i] >= q0(var) ? up : down).push_back(i);
   std::sort(up.begin(), up.end(), [&](auto a, auto b) { return inputs[a] < inputs[b]; });
   std::sort(down.begin(), down.end(), [&](auto a, auto b) { return inputs[a] > inputs[b]; });
 
   for (const auto* side : {&up, &down}) {
     if (side->empty()) continue;
-    detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
+    Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
       SweepPose<S>& pose = out.poses[(*side)[k]];
       const SolveReport<S> rep = tracer.advance(pose.input);
@@ -278,6 +270,38 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
       pose.report = rep;
     }
   }
+}
+
+}  // namespace detail
+
+/// As sweep() below, into `out`, whose pose vectors are reused: repeated sweeps of one mechanism into the
+/// same result allocate nothing per pose. Poses not solved this time hold empty q and qdot.
+template <class S> void sweep_into(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
+                                   const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
+                                   const ContinuationSettings<S>& cfg, SweepResult<S>& out) {
+  out.assembly = assembly;
+  out.limits.clear();
+  out.poses.resize(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    out.poses[i].input = inputs[i];
+    out.poses[i].report = SolveReport<S>{};
+    out.poses[i].report.status = assembly.ok() ? SolveStatus::NotReached : assembly.status;
+  }
+  if (assembly.ok()) detail::trace_sides(m, sd, q0, driver, inputs, cfg, out);
+  for (SweepPose<S>& pose : out.poses)
+    if (!pose.report.ok()) {
+      pose.q.resize(0);
+      pose.qdot.resize(0);
+    }
+}
+
+/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
+/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
+template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
+                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
+                                        const ContinuationSettings<S>& cfg = {}) {
+  SweepResult<S> out;
+  sweep_into(m, sd, q0, assembly, driver, inputs, cfg, out);
   return out;
 }
 

@@ -37,6 +37,7 @@ template <class S> struct NewtonSettings {
 template <class S> struct SolveData {
   KinematicsData<S> kin;
   VectorX<S> row_scale, col_scale;       // residual and variable scales
+  VectorX<S> row_weight;                 // 1 / row_scale: the hot path multiplies instead of dividing
   MatrixX<S> ju;                         // scaled Jacobian of the unknowns (filled for the COD only)
   std::vector<int> unknowns;             // the unknowns' columns in kin.jacobian
   VectorX<S> rhs, step;                  // scaled
@@ -52,6 +53,7 @@ template <class S> struct SolveData {
       : kin(m),
         row_scale(m.equation_count()),
         col_scale(m.unknowns.size()),
+        row_weight(m.equation_count()),
         ju(m.equation_count(), m.unknowns.size()),
         unknowns(m.unknowns),
         rhs(m.equation_count()),
@@ -65,6 +67,7 @@ template <class S> struct SolveData {
       row_scale(row + 2) = S(1);
     }
     for (; row < m.equation_count(); ++row) row_scale(row) = m.length_scale;
+    row_weight = row_scale.cwiseInverse();
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) col_scale(c) = m.variable_scale(m.unknowns[c]);
     using std::max;
     settings.consistency_tolerance =
@@ -74,7 +77,7 @@ template <class S> struct SolveData {
   /// Entry (r, c) of the scaled Jacobian of the unknowns R^-1 J_u C: row r divided by its residual scale,
   /// column c (variable unknowns[c]) multiplied by its variable scale.
   S scaled_jacobian(Eigen::Index r, Eigen::Index c) const {
-    return kin.jacobian(r, unknowns[static_cast<std::size_t>(c)]) / row_scale(r) * col_scale(c);
+    return kin.jacobian(r, unknowns[static_cast<std::size_t>(c)]) * row_weight(r) * col_scale(c);
   }
 
   /// Factors the first `rows` rows of the scaled Jacobian of the unknowns (kin.jacobian evaluated),
@@ -112,12 +115,12 @@ template <class S> struct SolveData {
   }
 };
 
-/// Max-norm of a vector whose entries are divided by scale.
-template <class S, class A, class B> S scaled_max_norm(const A& v, const B& scale) {
+/// Max-norm of a vector whose entries are multiplied by weight (the inverse of their scales).
+template <class S, class A, class B> S weighted_max_norm(const A& v, const B& weight) {
   using std::abs;
   using std::max;
   S n(0);
-  for (Eigen::Index i = 0; i < v.size(); ++i) n = max(n, S(abs(v(i)) / scale(i)));
+  for (Eigen::Index i = 0; i < v.size(); ++i) n = max(n, S(abs(v(i)) * weight(i)));
   return n;
 }
 
@@ -145,7 +148,8 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
   for (int it = 0;; ++it) {
     evaluate_and_factor(m, q, sd, rows);
     rep.iterations = it;
-    rep.residual = scaled_max_norm<S>(sd.kin.residual.head(rows), sd.row_scale.head(rows));
+    rep.evaluations = it + 1;
+    rep.residual = weighted_max_norm<S>(sd.kin.residual.head(rows), sd.row_weight.head(rows));
     rep.rank = sd.rank;
     rep.condition = sd.condition;
     const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
@@ -159,7 +163,7 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     if (it == cfg.max_iterations || stagnant) break;
     residual_before = residual_last;
     residual_last = rep.residual;
-    sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseQuotient(sd.row_scale.head(rows));
+    sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseProduct(sd.row_weight.head(rows));
     sd.solve(sd.rhs.head(rows), sd.step);
     last_step = sd.step.cwiseAbs().maxCoeff();
     if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
@@ -187,7 +191,7 @@ template <class S> void solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, 
   for (Eigen::Index r = 0; r < sd.rhs.size(); ++r) {
     S sum(0);
     for (std::size_t k = 0; k < m.drivers.size(); ++k) sum += sd.kin.jacobian(r, m.drivers[k]) * driver_rates(k);
-    sd.rhs(r) = -sum / sd.row_scale(r);
+    sd.rhs(r) = -sum * sd.row_weight(r);
   }
   sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
@@ -205,7 +209,7 @@ template <class S> VectorX<S> solve_acceleration(const Mechanism<S>& m, const Ve
   for (std::size_t k = 0; k < m.drivers.size(); ++k) qdd(m.drivers[k]) = driver_accels(k);
   evaluate_pairs(m, q, &qdot, 3, sd.kin);
   compute_bias(m, qdot, sd.kin);
-  sd.rhs = -(sd.kin.jacobian * qdd + sd.kin.bias).cwiseQuotient(sd.row_scale);
+  sd.rhs = -(sd.kin.jacobian * qdd + sd.kin.bias).cwiseProduct(sd.row_weight);
   sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdd(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
   return qdd;

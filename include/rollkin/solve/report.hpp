@@ -34,7 +34,8 @@ inline std::ostream& operator<<(std::ostream& os, SolveStatus s) { return os << 
 
 template <class S> struct SolveReport {
   SolveStatus status = SolveStatus::NoConvergence;
-  int iterations = 0;
+  int iterations = 0;       // Newton steps taken
+  int evaluations = 0;      // constraint evaluations, each with its Jacobian factorisation
   S residual = S(0);        // max-norm of the scaled residual at the returned pose
   S condition = S(0);       // condition estimate of the scaled Jacobian of the unknowns
   int rank = 0;             // numerical rank of the unknowns' Jacobian
