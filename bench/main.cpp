@@ -104,7 +104,6 @@ struct SweepTiming {
   SolveReport<double> assembly;
   SweepResult<double> result;  // of the first (untimed) sweep
   double us_pose = kNaN, evals_pose = kNaN;
-  double us_pose_fresh = kNaN;  // the same sweeps, each into a new SweepResult (allocating its poses)
   int solved = 0;
 };
 
@@ -124,19 +123,14 @@ SweepTiming time_sweep(const testing::Fixture<double>& f, const std::vector<doub
       evals += p.report.evaluations;
     }
   if (!t.assembly.ok()) return t;
-  std::vector<double> per_pose, per_pose_fresh;
-  SweepResult<double> reused;
+  std::vector<double> per_pose;
   for (int r = 0; r < repeats; ++r) {
-    auto t0 = Clock::now();
-    sweep_into(f.mech, sd, q0, t.assembly, 0, inputs, cfg, reused);  // result buffers reused after the first
+    const auto t0 = Clock::now();
+    const SweepResult<double> res = sweep(f.mech, sd, q0, t.assembly, 0, inputs, cfg);
     per_pose.push_back(seconds_since(t0) / static_cast<double>(inputs.size()));
-    t0 = Clock::now();
-    const SweepResult<double> fresh = sweep(f.mech, sd, q0, t.assembly, 0, inputs, cfg);
-    per_pose_fresh.push_back(seconds_since(t0) / static_cast<double>(inputs.size()));
-    g_sink += reused.poses.size() + fresh.poses.size();
+    g_sink += res.poses.size();
   }
   t.us_pose = 1e6 * median(per_pose);
-  t.us_pose_fresh = 1e6 * median(per_pose_fresh);
   t.evals_pose = t.solved ? static_cast<double>(evals) / t.solved : kNaN;
   return t;
 }
@@ -185,7 +179,7 @@ struct Row {
   long points = 0;
   double prep_ms = kNaN, table_ms = kNaN, bytes = kNaN, bytes_per_point = kNaN, peak_bytes = kNaN,
          retained_bytes = kNaN, rss_per_point = kNaN;
-  double us_pose = kNaN, us_pose_fresh = kNaN, evals_pose = kNaN, max_err = kNaN;
+  double us_pose = kNaN, evals_pose = kNaN, max_err = kNaN;
   int solved = 0, total = 0;
 };
 
@@ -312,7 +306,6 @@ class Bench {
       row.total = static_cast<int>(in.size());
       row.solved = t.solved;
       row.us_pose = t.us_pose;
-      row.us_pose_fresh = t.us_pose_fresh;
       row.evals_pose = t.evals_pose;
       if (!t.assembly.ok()) row.note = "assembly: " + std::string(to_string(t.assembly.status)) + " " + t.assembly.detail;
       else if (t.solved < row.total)
@@ -588,10 +581,6 @@ std::vector<Saving> measure_savings(Bench& bench, const std::vector<Row>& rows) 
         emit({"closed form vs " + r.tag, "closed form", r.name.substr(7), "us/pose",
               "max error " + fmt("%.1e", base->max_err) + " vs " + fmt("%.1e", r.max_err) + " rad", base->us_pose,
               r.us_pose});
-  for (const char* name : {"paper: parabola closed form", "paper: sampled parabola 1e5"})
-    if (const Row* r = find_row(rows, name))
-      emit({"result buffers reused (" + r->tag + ")", "sweep_into, same result", "sweep, new result", "us/pose",
-            "the poses' q and qdot allocated per sweep vs kept", r->us_pose, r->us_pose_fresh});
   if (const Row* e = find_row(rows, "elliptical gears: analytic"))
     if (const Row* s = find_row(rows, "elliptical gears: sampled 1e4"))
       emit({"ellipse closed form (ellint_2) vs spline", "analytic ellipse", "sampled 1e4", "us/pose",

@@ -140,6 +140,9 @@ template <class S> class BezierPath {
   }
 
   S arc_length(const S& u0, const S& u1) const { return arc_.between(*this, domain(), u0, u1); }
+  /// The table's pieces are whole segments, so s(u) costs a quadrature from the segment's start: no cheaper
+  /// than integrating from the rolling origin, which for the usual short motions stays inside one segment
+  /// and integrates over a shorter interval. The contour integrates from the origin instead.
   bool has_arc_length_primitive() const { return false; }
   S arc_length_primitive(const S& u) const { return arc_.primitive(*this, domain(), u); }
   S param_at_arc_length(const S& u0, const S& ds) const { return arc_.param_at(*this, domain(), u0, ds); }

@@ -238,11 +238,23 @@ template <class S> class Tracer {
   S base_condition_;
 };
 
-/// The sweep proper: traces the inputs above the assembly input upwards and those below downwards.
-template <class S> void trace_sides(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, int driver,
-                                    const std::vector<S>& inputs, const ContinuationSettings<S>& cfg,
-                                    SweepResult<S>& out) {
+}  // namespace detail
+
+/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
+/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
+template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
+                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
+                                        const ContinuationSettings<S>& cfg = {}) {
+  SweepResult<S> out;
+  out.assembly = assembly;
+  out.poses.resize(inputs.size());
   const int var = m.drivers[driver];
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    out.poses[i].input = inputs[i];
+    out.poses[i].report.status = assembly.ok() ? SolveStatus::NotReached : assembly.status;
+  }
+  if (!assembly.ok()) return out;
+
   // Requested inputs on each side of the assembly input, nearest first.
   std::vector<std::size_t> up, down;
   up.reserve(inputs.size());
@@ -253,7 +265,7 @@ template <class S> void trace_sides(const Mechanism<S>& m, SolveData<S>& sd, con
 
   for (const auto* side : {&up, &down}) {
     if (side->empty()) continue;
-    Tracer<S> tracer(m, sd, driver, cfg, q0);
+    detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
       SweepPose<S>& pose = out.poses[(*side)[k]];
       const SolveReport<S> rep = tracer.advance(pose.input);
@@ -270,38 +282,6 @@ template <class S> void trace_sides(const Mechanism<S>& m, SolveData<S>& sd, con
       pose.report = rep;
     }
   }
-}
-
-}  // namespace detail
-
-/// As sweep() below, into `out`, whose pose vectors are reused: repeated sweeps of one mechanism into the
-/// same result allocate nothing per pose. Poses not solved this time hold empty q and qdot.
-template <class S> void sweep_into(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
-                                   const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
-                                   const ContinuationSettings<S>& cfg, SweepResult<S>& out) {
-  out.assembly = assembly;
-  out.limits.clear();
-  out.poses.resize(inputs.size());
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    out.poses[i].input = inputs[i];
-    out.poses[i].report = SolveReport<S>{};
-    out.poses[i].report.status = assembly.ok() ? SolveStatus::NotReached : assembly.status;
-  }
-  if (assembly.ok()) detail::trace_sides(m, sd, q0, driver, inputs, cfg, out);
-  for (SweepPose<S>& pose : out.poses)
-    if (!pose.report.ok()) {
-      pose.q.resize(0);
-      pose.qdot.resize(0);
-    }
-}
-
-/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
-/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
-template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
-                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
-                                        const ContinuationSettings<S>& cfg = {}) {
-  SweepResult<S> out;
-  sweep_into(m, sd, q0, assembly, driver, inputs, cfg, out);
   return out;
 }
 
