@@ -16,12 +16,7 @@ template <class S> using Twist = Vec3<S>;
 template <class S> class SE2 {
  public:
   SE2() : c_(1), s_(0), t_(S(0), S(0)) {}
-  SE2(const S& angle, const Vec2<S>& t) : t_(t) {
-    using std::cos;
-    using std::sin;
-    c_ = cos(angle);
-    s_ = sin(angle);
-  }
+  SE2(const S& angle, const Vec2<S>& t) : t_(t) { sin_cos(angle, s_, c_); }
   /// From a unit direction (c, s) of the x-axis and the origin t.
   static SE2 from_axis(const S& c, const S& s, const Vec2<S>& t) {
     SE2 g;

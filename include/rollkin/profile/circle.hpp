@@ -20,9 +20,10 @@ template <class S> class Circle {
   ParamKind parameter_kind() const { return ParamKind::Angle; }
   int continuity() const { return 3; }
   Jet<S> jet(const S& u, int order) const {
-    using std::cos;
-    using std::sin;
-    const S c = r_ * cos(u), s = r_ * sin(u);
+    S c, s;
+    sin_cos(u, s, c);
+    c *= r_;
+    s *= r_;
     Jet<S> j;
     j.p = Vec2<S>(c, s);
     j.d1 = Vec2<S>(-s, c);

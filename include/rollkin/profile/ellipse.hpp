@@ -35,9 +35,8 @@ template <class S> class Ellipse {
   ParamKind parameter_kind() const { return ParamKind::Angle; }
   int continuity() const { return 3; }
   Jet<S> jet(const S& t, int order) const {
-    using std::cos;
-    using std::sin;
-    const S c = cos(t), s = sin(t);
+    S c, s;
+    sin_cos(t, s, c);
     Jet<S> j;
     j.p = Vec2<S>(a_ * c, b_ * s);
     j.d1 = Vec2<S>(-a_ * s, b_ * c);
