@@ -66,9 +66,9 @@ inline bool sin_cos_reduced(double x, double& s, double& c) {
 
 }  // namespace detail
 
-/// s = sin x, c = cos x. In double, angles up to 1e5 rad take an inline reduction and series (within 2 ulp
-/// of the libm results, tests/test_scalar_mpfr.cpp) at about a third of the cost of the libm call; other
-/// scalar types call their own sin and cos.
+/// s = sin x, c = cos x. In double, angles up to 1e5 rad take an inline reduction and series (within 2 eps
+/// absolute of MPFR's sin and cos, tests/test_scalar_mpfr.cpp) at about a third of the cost of the libm
+/// call; other scalar types call their own sin and cos.
 template <class S> inline void sin_cos(const S& x, S& s, S& c) {
   using std::cos;
   using std::sin;

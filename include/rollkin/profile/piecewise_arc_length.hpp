@@ -38,13 +38,15 @@ template <class S> class PiecewiseArcLength {
   S total() const { return cumulative_.back(); }
   const std::vector<S>& cumulative() const { return cumulative_; }
 
-  /// Signed arc length from u0 to u1 (one quadrature inside one piece, else the primitive's difference).
+  /// Signed arc length from u0 to u1 (one quadrature inside one piece, else the primitive's difference,
+  /// with each end wrapped and looked up once).
   template <class Pieces>
   S between(const Pieces& pieces, const Domain<S>& domain, const S& u0, const S& u1) const {
+    const S t0 = domain.turns(u0), t1 = domain.turns(u1);
     const S w0 = domain.wrap(u0), w1 = domain.wrap(u1);
-    const std::size_t i0 = pieces.piece_of(w0);
-    if (domain.turns(u0) == domain.turns(u1) && i0 == pieces.piece_of(w1)) return pieces.piece_length(i0, w0, w1);
-    return primitive(pieces, domain, u1) - primitive(pieces, domain, u0);
+    const std::size_t i0 = pieces.piece_of(w0), i1 = pieces.piece_of(w1);
+    if (t0 == t1 && i0 == i1) return pieces.piece_length(i0, w0, w1);
+    return (t1 - t0) * total() + from_start(pieces, i1, w1) - from_start(pieces, i0, w0);
   }
 
   /// s(u): arc length from the first knot, whole turns included (closed profiles).
