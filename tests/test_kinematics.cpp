@@ -88,3 +88,28 @@ BOOST_AUTO_TEST_CASE(link_poses_close_every_loop) {
   BOOST_TEST(c4.x() == 7.99303, boost::test_tools::tolerance(1e-6));
   BOOST_TEST(c4.y() == -0.26394, boost::test_tools::tolerance(1e-4));
 }
+
+BOOST_AUTO_TEST_CASE(rolling_rows_follow_a_changed_reference) {
+  // The rolling rows keep each origin's arc-length primitive between evaluations; when the reference (the
+  // arc-length origin, eq. 3) changes, the rows must follow it. Truth: the contours' own arc_length from the
+  // reference, which integrates or differences the closed form per call.
+  const auto f = paper_fourbar<double>();
+  const Mechanism<double>& m = f.mech;
+  KinematicsData<double> d(m);
+  VectorX<double> q = f.guess;
+  for (int i = 0; i < q.size(); ++i) q(i) += 0.1 * std::cos(2.0 * i + 0.5);
+  for (double shift : {0.0, 0.3, -0.2, 0.0}) {
+    d.reference = f.guess;
+    for (int i = 0; i < d.reference.size(); ++i) d.reference(i) += shift * (i % 2 ? 1 : -1);
+    residual_at(m, d, q);
+    int row = 3 * static_cast<int>(m.loops.size());
+    for (int k : m.rolling_pairs) {
+      const Pair<double>& p = m.pairs[k];
+      const int i = p.first_variable;
+      const double expected = m.contours[p.contour_a].arc_length(d.reference(i), q(i)) +
+                              m.contours[p.contour_b].arc_length(d.reference(i + 1), q(i + 1));
+      BOOST_TEST(std::abs(d.residual(row) - expected) < 1e-14, "pair " << p.name << ", shift " << shift);
+      ++row;
+    }
+  }
+}
