@@ -1,5 +1,5 @@
 // Describing a mechanism in code: links, contours and pairs by name, then build() numbers the variables
-// and finds the loops. The scene loader does the same from JSON.
+// and finds the loops. The scene reader (src/io/scene_reader.cpp) builds through it from JSON.
 #pragma once
 
 #include "rollkin/mechanism.hpp"
@@ -48,8 +48,14 @@ template <class S> class MechanismBuilder {
     return index + j;
   }
   void driver(int pair, int j = 0) { m_.drivers.push_back(variable(pair, j)); }
+  /// A driver given by its variable number in q (as numbered by build()).
+  void driver_variable(int variable) { m_.drivers.push_back(variable); }
 
-  Mechanism<S> build() {
+  /// The description so far (links, contours, pairs, drivers; not finalized), for look-ups by name.
+  const Mechanism<S>& description() const { return m_; }
+
+  /// The finalized mechanism. Throws std::invalid_argument if a link cannot be reached from the ground.
+  Mechanism<S> build() const {
     Mechanism<S> m = m_;
     m.finalize();
     return m;

@@ -11,8 +11,14 @@
 
 #include "rollkin/scalar.hpp"
 
+#include <array>
 #include <cstddef>
 #include <vector>
+
+namespace rollkin {
+template <class S> class Contour;
+template <class S> class SE2;
+}  // namespace rollkin
 
 namespace rollkin::geometry {
 
@@ -70,5 +76,12 @@ struct InterferenceReport {
 /// (union-find), so a smooth tangential contact is one zone however finely it is sampled.
 InterferenceReport check_interference(const std::vector<Vec2<double>>& a, bool a_closed,
                                       const std::vector<Vec2<double>>& b, bool b_closed, double touch_tol);
+
+/// The initial contact of two contours placed in the world by their links' poses: both contours sampled at
+/// `samples` parameters each (Domain::sample) in world coordinates, the closest points of the polylines
+/// (find_contact) and their parameters interpolated linearly within the segment. Returns {u on a, u on b}
+/// in each contour's own parameter. Throws std::invalid_argument when find_contact does (too few samples).
+std::array<double, 2> locate_contact(const Contour<double>& a, const SE2<double>& pose_a, const Contour<double>& b,
+                                     const SE2<double>& pose_b, int samples = 2000);
 
 }  // namespace rollkin::geometry

@@ -15,6 +15,7 @@
 
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/kinematics.hpp"
+#include "rollkin/solve/sweep_grid.hpp"
 
 #include <optional>
 #include <string>
@@ -22,15 +23,11 @@
 
 namespace rollkin::io {
 
-/// A sweep of one driver: from, to and step in the FILE's units (degrees or radians for an angle input,
-/// scene length units for a length input); `unit` converts them to internal units (pi/180 for degrees).
-struct Sweep {
-  std::string input;   // full variable name, e.g. "O_A.theta2"
-  int driver = 0;      // index into mechanism.drivers
-  int variable = 0;    // index into q
-  double from = 0, to = 0, step = 1;
-  double unit = 1;     // internal value = file value * unit
-};
+// The sweep grid lives in the solve layer (solve/sweep_grid.hpp); these names keep io:: callers compiling.
+using rollkin::Sweep;
+using rollkin::sweep_inputs;
+using rollkin::sweep_values;
+using rollkin::check_sweep;
 
 struct Scene {
   Mechanism<double> mechanism;       // finalized, drivers set from "inputs"
@@ -55,17 +52,5 @@ Scene load_scene(const std::string& path);
 /// Builds a scene from JSON text; `file` names the source in messages and anchors relative contour paths
 /// (they are resolved against its directory).
 Scene parse_scene(const std::string& text, const std::string& file);
-
-/// The requested input values, in INTERNAL units: from, from + step, ... up to `to`, inclusive of `to` when
-/// it falls on the grid within 1e-9 of a step. Throws std::invalid_argument for a zero step, a step of the
-/// wrong sign or more than 10 million values.
-std::vector<double> sweep_inputs(const Sweep& sweep);
-
-/// The same values in the FILE's units (from + k step, exactly as the grid defines them).
-std::vector<double> sweep_values(const Sweep& sweep);
-
-/// Checks a sweep's numbers (step non-zero, with the sign of to - from, finite, not too many values);
-/// returns an empty string when fine, else what is wrong.
-std::string check_sweep(const Sweep& sweep);
 
 }  // namespace rollkin::io

@@ -1,0 +1,98 @@
+// Checks shared by the contour readers (see contour_reader.hpp).
+#include "contour_reader.hpp"
+
+#include <cmath>
+
+namespace rollkin::io {
+
+namespace fs = std::filesystem;
+
+double ContourContext::angle(double file_value) const { return degrees_ ? deg_to_rad(file_value) : file_value; }
+
+void ContourContext::keys(const json& c, const std::string& path, std::vector<std::string> extra) const {
+  static const std::vector<std::string> common = {"name", "type", "at", "material"};
+  extra.insert(extra.begin(), common.begin(), common.end());
+  js.object(c, path, extra);
+}
+
+std::string ContourContext::contour_file(const json& v, const std::string& path) const {
+  const std::string rel = js.string(v, path, "a file name relative to the scene file");
+  if (rel.empty()) js.fail(path, "expected a file name, got an empty string");
+  const fs::path p = fs::path(rel).is_absolute() ? fs::path(rel) : dir_ / rel;
+  files_read_.push_back(p.string());
+  return p.string();
+}
+
+bool ContourContext::material(const json& c, const std::string& path, std::optional<bool> natural_inside,
+                              const std::string& def) const {
+  std::string side = def;
+  if (const json* s = js.get(c, "material")) side = js.string(*s, child(path, "material"), "the material side");
+  const std::vector<std::string> allowed = natural_inside ? std::vector<std::string>{"left", "right", "inside", "outside"}
+                                                          : std::vector<std::string>{"left", "right"};
+  bool known = false;
+  for (const auto& a : allowed) known = known || a == side;
+  if (!known)
+    js.fail(child(path, "material"), "material \"" + side + "\" is not allowed for this contour; expected one of " +
+                                         quoted_list(allowed) +
+                                         (natural_inside ? "" : " (\"inside\"/\"outside\" need a closed contour, a disk or a parabola)"));
+  if (side == "left") return false;
+  if (side == "right") return true;
+  const bool inside = side == "inside";
+  return inside != *natural_inside;
+}
+
+ArcLengthMethod ContourContext::arc_length_method(const json& v, const std::string& path) const {
+  js.object(v, path, {"method", "order", "panels"});
+  ArcLengthMethod am;
+  const std::string method = js.get(v, "method") ? js.string(v["method"], child(path, "method"), "an arc-length method") : "closed_form";
+  if (method == "closed_form") {
+    if (js.get(v, "order") || js.get(v, "panels")) js.fail(path, "\"order\" and \"panels\" apply to gauss_legendre and newton_cotes only");
+    return am;
+  }
+  am.closed_form = false;
+  if (method == "gauss_legendre") {
+    am.rule.kind = Quadrature::GaussLegendre;
+    am.rule.order = 8;
+  } else if (method == "newton_cotes") {
+    am.rule.kind = Quadrature::NewtonCotes;
+    am.rule.order = 2;
+  } else {
+    js.fail(child(path, "method"), "unknown arc-length method \"" + method +
+                                       "\"; expected \"closed_form\", \"gauss_legendre\" or \"newton_cotes\"");
+  }
+  if (const json* o = js.get(v, "order")) {
+    const double n = js.number(*o, child(path, "order"), "the rule's order");
+    const bool gl = am.rule.kind == Quadrature::GaussLegendre;
+    if (n != std::floor(n) || (gl && (n < 1 || n > 64)) || (!gl && n != 2 && n != 4))
+      js.fail(child(path, "order"), gl ? "expected a Gauss-Legendre order: an integer from 1 to 64, got " + fmt(n)
+                                       : "expected a Newton-Cotes degree: 2 (Simpson) or 4 (Boole), got " + fmt(n));
+    am.rule.order = static_cast<int>(n);
+  }
+  if (const json* p = js.get(v, "panels")) {
+    const double n = js.number(*p, child(path, "panels"), "the number of panels");
+    if (n != std::floor(n) || n < 1 || n > 100000)
+      js.fail(child(path, "panels"), "expected an integer number of panels from 1 to 100000, got " + fmt(n));
+    am.rule.panels = static_cast<int>(n);
+  }
+  return am;
+}
+
+ProfileShape<double> ContourContext::parameterised(ProfileShape<double> shape, const json& c, const std::string& path) const {
+  const json* p = js.get(c, "parameter");
+  if (p == nullptr) return shape;
+  const std::string v = js.string(*p, child(path, "parameter"), "the contour parameter");
+  static const std::vector<std::string> allowed = {"native", "arc_length"};
+  if (v != "native" && v != "arc_length")
+    js.fail(child(path, "parameter"), "unknown contour parameter \"" + v + "\"; expected one of " + quoted_list(allowed));
+  if (v == "native") return shape;
+  if (const auto* sp = std::get_if<SampledProfile<double>>(&shape)) return ArcLengthProfile<double>(*sp);
+  return ArcLengthProfile<double>(std::get<BezierPath<double>>(shape));
+}
+
+double signed_area(const std::vector<Vec2<double>>& pts) {
+  double a = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) a += cross2<double>(pts[i], pts[(i + 1) % pts.size()]);
+  return a / 2;
+}
+
+}  // namespace rollkin::io

@@ -1,0 +1,77 @@
+// Contour readers of the scene format (docs/scene_format.md, "contours"): one function per contour "type",
+// listed in registry.cpp. A reader checks the contour object's keys, builds the profile and says on which
+// side the material lies; the scene reader adds the common part (name, "at") and hands it to the builder.
+//
+// Adding a contour kind: one new file under src/io/contours/ defining its reader, and one line in
+// registry.cpp (its declaration and table entry).
+#pragma once
+
+#include "../json_access.hpp"
+
+#include "rollkin/profile/profile.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollkin::io {
+
+/// What every contour reader may use: the JSON accessors, the scene's directory and angle unit, and the
+/// checks shared by several kinds.
+class ContourContext {
+ public:
+  ContourContext(const JsonAccess& access, std::filesystem::path scene_dir, bool degrees,
+                 std::vector<std::string>& files_read)
+      : js(access), dir_(std::move(scene_dir)), degrees_(degrees), files_read_(files_read) {}
+
+  const JsonAccess& js;
+
+  /// An angle of the file in radians.
+  double angle(double file_value) const;
+  /// The unit name of the file's angles, for messages: "degrees" or "radians".
+  bool degrees() const { return degrees_; }
+
+  /// Checks that the contour object has only the keys common to all contours and `extra`.
+  void keys(const json& c, const std::string& path, std::vector<std::string> extra) const;
+  /// A contour file path, relative to the scene file's directory; recorded in Scene::files_read.
+  std::string contour_file(const json& v, const std::string& path) const;
+  /// "material" -> reversed. natural_inside: whether the profile's natural direction has "inside" on the
+  /// left (nullopt: "inside"/"outside" are not defined for this contour). def: the default side.
+  bool material(const json& c, const std::string& path, std::optional<bool> natural_inside, const std::string& def) const;
+  /// "arc_length": {"method", "order", "panels"} of an analytic curve.
+  ArcLengthMethod arc_length_method(const json& v, const std::string& path) const;
+  /// "parameter" of a sampled or Bezier/SVG contour: "native" (default: chord length, segment parameter)
+  /// or "arc_length" (the profile re-parameterised by arc length, ArcLengthProfile), applied to `shape`.
+  ProfileShape<double> parameterised(ProfileShape<double> shape, const json& c, const std::string& path) const;
+
+ private:
+  std::filesystem::path dir_;
+  bool degrees_;
+  std::vector<std::string>& files_read_;
+};
+
+/// A contour's profile and material side (reversed: the material is on the right of the profile's
+/// natural direction).
+struct ContourShape {
+  ProfileShape<double> shape;
+  bool reversed;
+};
+
+/// Reads the contour object c at JSON path `path`. Throws InputError.
+using ContourReader = ContourShape (*)(const json& c, const std::string& path, const ContourContext& ctx);
+
+struct ContourKind {
+  const char* type;
+  ContourReader read;
+};
+
+/// The reader of a "type", or nullptr when the type is unknown.
+ContourReader find_contour_reader(const std::string& type);
+/// The known types, in the order of the registry (for the "unknown contour type" message).
+std::vector<std::string> contour_types();
+
+/// Signed area of the polygon through pts (shoelace), > 0 counter-clockwise.
+double signed_area(const std::vector<Vec2<double>>& pts);
+
+}  // namespace rollkin::io

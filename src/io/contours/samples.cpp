@@ -1,0 +1,65 @@
+// "samples" contours: points from a point file or inline, fitted by a spline (docs/scene_format.md).
+#include "contour_reader.hpp"
+
+#include "rollkin/geometry/validation.hpp"
+#include "rollkin/io/point_file.hpp"
+
+namespace rollkin::io {
+
+namespace {
+
+constexpr std::size_t kMinSplineSamples = 4;
+constexpr double kValidationTolerance = 1e-9;
+
+}  // namespace
+
+ContourShape read_samples_contour(const json& c, const std::string& path, const ContourContext& ctx) {
+  const JsonAccess& js = ctx.js;
+  ctx.keys(c, path, {"file", "points", "closed", "smoothing", "scale", "parameter"});
+  const bool closed = js.get(c, "closed") ? js.boolean(c["closed"], child(path, "closed"), "whether the contour is closed") : false;
+  const double scale = js.number_or(c, path, "scale", 1.0, "a scale factor");
+  if (!(scale > 0)) js.fail(child(path, "scale"), "expected a positive scale factor, got " + fmt(scale));
+  const double smoothing = js.number_or(c, path, "smoothing", 0.0, "a smoothing tolerance");
+  if (smoothing < 0) js.fail(child(path, "smoothing"), "expected a smoothing tolerance >= 0, got " + fmt(smoothing));
+  const json* f = js.get(c, "file");
+  const json* p = js.get(c, "points");
+  if ((f != nullptr) == (p != nullptr))
+    js.fail(path, "expected exactly one of \"file\" (a point file) or \"points\" (inline [[x, y], ...])");
+  std::vector<Vec2<double>> pts;
+  std::string source;
+  if (f) {
+    source = ctx.contour_file(*f, child(path, "file"));
+    try {
+      pts = read_point_file(source, kMinSplineSamples, scale);
+    } catch (const InputError& e) {
+      js.fail(child(path, "file"), e.what());
+    }
+  } else {
+    source = js.file() + ":" + child(path, "points");
+    pts = js.points(*p, child(path, "points"));
+    for (auto& q : pts) q *= scale;
+    if (pts.size() < kMinSplineSamples)
+      js.fail(child(path, "points"), "contour too short: " + std::to_string(pts.size()) + " samples; expected at least " +
+                                         std::to_string(kMinSplineSamples) + " for a spline");
+  }
+  const double area = closed ? signed_area(pts) : 0.0;
+  const geometry::MaterialSide as_drawn = area >= 0 ? geometry::MaterialSide::Left : geometry::MaterialSide::Right;
+  try {
+    geometry::throw_if_invalid(geometry::validate_polyline(pts, closed, as_drawn, kValidationTolerance), source);
+  } catch (const std::runtime_error& e) {
+    js.fail(path, std::string("invalid sampled contour: ") + e.what());
+  }
+  SplineOptions<double> opt;
+  opt.closed = closed;
+  opt.smoothing_tolerance = smoothing;
+  std::optional<SampledProfile<double>> spline;
+  try {
+    spline.emplace(pts, opt);
+  } catch (const std::exception& e) {
+    js.fail(path, std::string("cannot fit the sampled contour (") + source + "): " + e.what());
+  }
+  const bool reversed = closed ? ctx.material(c, path, area > 0, "inside") : ctx.material(c, path, std::nullopt, "left");
+  return {ctx.parameterised(std::move(*spline), c, path), reversed};
+}
+
+}  // namespace rollkin::io
