@@ -3,6 +3,7 @@
 #include "rollkin/reference.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/units.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -21,7 +22,7 @@ template <class S> std::string decimal(const S& x, int digits) {
 }
 
 template <class S> S display_scale(const Mechanism<S>& m, int var) {
-  return m.variables[var].kind == ParamKind::Angle ? S(S(180) / pi<S>()) : S(1);
+  return m.variables[var].kind == ParamKind::Angle ? rad_to_deg(S(1)) : S(1);
 }
 
 template <class S> std::string limit_text(const SolveReport<S>& r, int digits) {
@@ -84,7 +85,7 @@ ReferenceSweep run_cast(const Mechanism<double>& mech, const VectorX<double>& gu
   std::vector<S> in;
   const int var = m.drivers.at(driver);
   if (decimal_inputs) {
-    const S to_solver = m.variables[var].kind == ParamKind::Angle ? S(pi<S>() / S(180)) : S(1);
+    const S to_solver = m.variables[var].kind == ParamKind::Angle ? io::radians_per<S>(io::AngleUnit::Degree) : S(1);
     for (const auto& s : *decimal_inputs) in.push_back(S(s) * to_solver);
   } else {
     for (double x : *inputs) in.push_back(S(x));

@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(sweep_inputs_include_the_end_on_the_grid) {
 BOOST_AUTO_TEST_CASE(radians_file_keeps_angles) {
   std::string text = paper_with("\"angle\": \"deg\"", "\"angle\": \"rad\"");
   const Scene s = load_scene(write_temp("rad.json", text));
-  BOOST_TEST(!s.degrees);
+  BOOST_TEST((s.angle_unit == rollkin::io::AngleUnit::Radian));
   BOOST_TEST(s.guess(2) == 180.0);  // taken as radians, as written
   BOOST_TEST(s.unit_of(2) == 1.0);
   BOOST_TEST(s.unit_label(2) == "rad");
@@ -296,4 +296,26 @@ BOOST_AUTO_TEST_CASE(duplicate_and_self_intersecting_samples_name_the_file_and_s
   const std::string eight = error_for("eight_samples.json", scene_with("disk_eight.txt"));
   BOOST_TEST(contains(eight, "disk_eight.txt"));
   BOOST_TEST(contains(eight, "cross"));
+}
+
+// ---- units.length ------------------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(length_unit_is_a_real_unit) {
+  using rollkin::io::LengthUnit;
+  const Scene mm = load_scene(write_temp("mm.json", paper_with("\"length\": \"m\"", "\"length\": \"mm\"")));
+  BOOST_TEST((mm.length == LengthUnit::Millimetre));
+  BOOST_TEST(mm.unit_label(1) == "mm");
+  const Scene inch = load_scene(write_temp("in.json", paper_with("\"length\": \"m\"", "\"length\": \"in\"")));
+  BOOST_TEST((inch.length == LengthUnit::Inch));
+  // Without units.length the numbers are taken as they are; outputs keep the "m" label.
+  const Scene none = load_scene(write_temp("no_units.json", paper_with("\"length\": \"m\", ", "")));
+  BOOST_TEST((none.length == LengthUnit::Unitless));
+  BOOST_TEST(none.unit_label(1) == "m");
+}
+
+BOOST_AUTO_TEST_CASE(unknown_length_unit_names_the_accepted_ones) {
+  expect_error("furlong.json", paper_with("\"length\": \"m\"", "\"length\": \"furlong\""), "units.length",
+               "unknown length unit \"furlong\"; expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\"");
+  expect_error("metre.json", paper_with("\"length\": \"m\"", "\"length\": \"metre\""), "units.length", "\"mm\", \"in\"");
+  expect_error("length_type.json", paper_with("\"length\": \"m\"", "\"length\": 1"), "units.length", "(a string), got a number");
 }

@@ -18,8 +18,6 @@ template <class S> using Vec3 = Eigen::Matrix<S, 3, 1>;
 
 template <class S> inline S pi() { return boost::math::constants::pi<S>(); }
 template <class S> inline S epsilon() { return std::numeric_limits<S>::epsilon(); }
-template <class S> inline S deg_to_rad(const S& deg) { return deg * pi<S>() / S(180); }
-template <class S> inline S rad_to_deg(const S& rad) { return rad * S(180) / pi<S>(); }
 
 /// Conversion between scalar types (double -> MPFR is exact; MPFR -> double rounds).
 template <class T, class S> inline T scalar_cast(const S& x) { return static_cast<T>(x); }

@@ -222,7 +222,7 @@ void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, cons
 }
 
 /// Contact pairs whose signed curvatures cancel at q (osculation): their contact Jacobian is singular
-/// (method.md section 5), which the solver reports only as a rank loss.
+/// (docs/method.md section 5), which the solver reports only as a rank loss.
 std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const VectorX<double>& q) {
   std::vector<std::string> out;
   KinematicsData<double> kin(m);
@@ -242,7 +242,7 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
 /// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
 int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o) {
   const Mechanism<double>& m = scene.mechanism;
-  const bool decimal = scene.degrees || m.variables[sw.variable].kind != ParamKind::Angle;
+  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
   ReferenceSweep ref;
   if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
     std::vector<std::string> values;

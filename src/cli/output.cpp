@@ -2,6 +2,7 @@
 
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/svg.hpp"
+#include "rollkin/io/units.hpp"
 
 #include <Eigen/QR>
 
@@ -16,10 +17,11 @@ namespace rollkin::cli {
 namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const io::AngleUnit kOutputAngle = io::AngleUnit::Degree;  // outputs give angles in degrees
 
 /// Output units: degrees for angles, scene units otherwise.
 double out_scale(const Mechanism<double>& m, int var) {
-  return m.variables[var].kind == ParamKind::Angle ? 180.0 / pi<double>() : 1.0;
+  return m.variables[var].kind == ParamKind::Angle ? io::from_radians(1.0, kOutputAngle) : 1.0;
 }
 
 std::string base_name(const std::string& file) { return std::filesystem::path(file).filename().string(); }
@@ -27,7 +29,7 @@ std::string base_name(const std::string& file) { return std::filesystem::path(fi
 std::string axis_label(const OutputContext& ctx, int var) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   switch (m.variables[var].kind) {
-    case ParamKind::Angle: return m.variables[var].name + " [deg]";
+    case ParamKind::Angle: return m.variables[var].name + " [" + io::unit_label(kOutputAngle) + "]";
     case ParamKind::Length: return m.variables[var].name + " [" + ctx.scene.length_unit + "]";
     case ParamKind::Unitless: return m.variables[var].name;
   }
@@ -63,10 +65,10 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
   KinematicsData<double> kin(m);
   const double in_scale = out_scale(m, input);
   // The input column from the requested values in file units (exact grid values for a "deg" file).
-  const bool radians_file_angle = !ctx.scene.degrees && m.variables[input].kind == ParamKind::Angle;
+  const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle && m.variables[input].kind == ParamKind::Angle;
   for (std::size_t r = 0; r < ctx.result.poses.size(); ++r) {
     const auto& pose = ctx.result.poses[r];
-    std::vector<double> row{radians_file_angle ? rad_to_deg(ctx.inputs[r]) : ctx.inputs[r]};
+    std::vector<double> row{radians_file_angle ? io::from_radians(ctx.inputs[r], kOutputAngle) : ctx.inputs[r]};
     const bool ok = pose.report.ok();
     for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
     if (rates)
@@ -79,7 +81,7 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
     for (std::size_t l = 0; l < m.links.size(); ++l) {
       row.push_back(ok ? lp[l].translation().x() : kNaN);
       row.push_back(ok ? lp[l].translation().y() : kNaN);
-      row.push_back(ok ? rad_to_deg(lp[l].angle()) : kNaN);
+      row.push_back(ok ? io::from_radians(lp[l].angle(), kOutputAngle) : kNaN);
     }
     row.push_back(ok ? pose.report.residual : kNaN);
     csv.add_row(row, to_string(pose.report.status));
@@ -98,7 +100,7 @@ std::string plot_svg(const OutputContext& ctx) {
 
   io::SvgChart angles(760, 460), lengths(760, 460);
   angles.set_title(name + ": pair angles against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
-      .set_y_label("angle [deg]").set_legend(io::LegendPosition::Outside);
+      .set_y_label(std::string("angle [") + io::unit_label(kOutputAngle) + "]").set_legend(io::LegendPosition::Outside);
   lengths.set_title(name + ": contact parameters against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
       .set_y_label("length [" + ctx.scene.length_unit + "] or parameter").set_legend(io::LegendPosition::Outside);
   std::size_t n_angles = 0, n_lengths = 0;

@@ -135,12 +135,13 @@ std::vector<Vec2<double>> JsonAccess::points(const json& v, const std::string& p
   return out;
 }
 
-SE2<double> JsonAccess::frame(const json& v, const std::string& path, bool degrees) const {
+SE2<double> JsonAccess::frame(const json& v, const std::string& path, AngleUnit angle_unit) const {
+  const bool degrees = angle_unit == AngleUnit::Degree;
   object(v, path, {"x", "y", "angle"});
   const double x = number_or(v, path, "x", 0, "an x coordinate");
   const double y = number_or(v, path, "y", 0, "a y coordinate");
   const double a = number_or(v, path, "angle", 0, std::string("an angle in ") + (degrees ? "degrees" : "radians"));
-  return SE2<double>(degrees ? deg_to_rad(a) : a, Vec2<double>(x, y));
+  return SE2<double>(to_radians(a, angle_unit), Vec2<double>(x, y));
 }
 
 }  // namespace rollkin::io

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
+#include "rollkin/io/units.hpp"
 #include "rollkin/se2.hpp"
 
 #include <nlohmann/json.hpp>
@@ -59,8 +60,8 @@ class JsonAccess {
 
   Vec2<double> point(const json& v, const std::string& path) const;
   std::vector<Vec2<double>> points(const json& v, const std::string& path) const;
-  /// {"x", "y", "angle"}, all optional; the angle in degrees when `degrees`, else radians.
-  SE2<double> frame(const json& v, const std::string& path, bool degrees) const;
+  /// {"x", "y", "angle"}, all optional; the angle in the file's angle unit.
+  SE2<double> frame(const json& v, const std::string& path, AngleUnit angle_unit) const;
 
  private:
   std::string file_;

@@ -1,6 +1,6 @@
 // Scene JSON reader (format: docs/scene_format.md). Strict: unknown keys, wrong types and dangling names
 // are InputErrors naming the file, the JSON path and what is expected. The mechanism is built through
-// MechanismBuilder; each contour kind has its reader under src/io/contours/ (registry.cpp).
+// MechanismBuilder; each contour kind has its reader under src/io/contours/ (src/io/contours/registry.cpp).
 #include "rollkin/io/scene.hpp"
 
 #include "contours/contour_reader.hpp"
@@ -96,14 +96,23 @@ class SceneReader {
     const json* u = js_.get(root_, "units");
     if (!u) return;
     js_.object(*u, "units", {"length", "angle"});
-    if (const json* l = js_.get(*u, "length"))
-      scene.length_unit = js_.string(*l, "units.length", "a length unit label such as \"m\" or \"mm\"");
+    if (const json* l = js_.get(*u, "length")) {
+      scene.length_unit = js_.string(*l, "units.length", "a length unit such as \"m\" or \"mm\"");
+      try {
+        scene.length = parse_length_unit(scene.length_unit);
+      } catch (const std::invalid_argument& e) {
+        fail("units.length", e.what());
+      }
+    }
     if (const json* a = js_.get(*u, "angle")) {
       const std::string s = js_.string(*a, "units.angle", "the angle unit \"deg\" or \"rad\"");
-      if (s != "deg" && s != "rad") fail("units.angle", "unknown angle unit \"" + s + "\"; expected \"deg\" or \"rad\"");
-      scene_degrees_ = s == "deg";
+      try {
+        angle_unit_ = parse_angle_unit(s);
+      } catch (const std::invalid_argument& e) {
+        fail("units.angle", e.what());
+      }
     }
-    scene.degrees = scene_degrees_;
+    scene.angle_unit = angle_unit_;
   }
 
   void read_links(Scene& scene) {
@@ -141,12 +150,12 @@ class SceneReader {
     const std::string type = js_.string(js_.require(c, path, "type", "the contour type"), child(path, "type"), "the contour type");
     const ContourReader reader = find_contour_reader(type);
     if (!reader) fail(child(path, "type"), "unknown contour type \"" + type + "\"; expected one of " + quoted_list(contour_types()));
-    const ContourContext ctx(js_, dir_, scene_degrees_, scene.files_read);
+    const ContourContext ctx(js_, dir_, angle_unit_, scene.length, scene.files_read);
     ContourShape shape = reader(c, path, ctx);
     const std::string nm = js_.name(js_.require(c, path, "name", "the contour's name"), child(path, "name"), "contour name");
     if (!names.insert(nm).second) fail(child(path, "name"), "duplicate contour name \"" + nm + "\" on link \"" + link_name + "\"");
     SE2<double> at;
-    if (const json* a = js_.get(c, "at")) at = js_.frame(*a, child(path, "at"), scene_degrees_);
+    if (const json* a = js_.get(c, "at")) at = js_.frame(*a, child(path, "at"), angle_unit_);
     builder_.contour(link, nm, std::move(shape.shape), at, shape.reversed);
   }
 
@@ -185,8 +194,8 @@ class SceneReader {
     SE2<double> frame_a, frame_b;
     if (const json* at = js_.get(p, "at")) {
       js_.array(*at, child(path, "at"), "the joint frames [frame in A, frame in B]", 2);
-      frame_a = js_.frame((*at)[0], index(child(path, "at"), 0), scene_degrees_);
-      frame_b = js_.frame((*at)[1], index(child(path, "at"), 1), scene_degrees_);
+      frame_a = js_.frame((*at)[0], index(child(path, "at"), 0), angle_unit_);
+      frame_b = js_.frame((*at)[1], index(child(path, "at"), 1), angle_unit_);
     }
     std::string var = kind == PairKind::Revolute ? "angle" : "s";
     if (const json* v = js_.get(p, "variable")) var = js_.name(*v, child(path, "variable"), "variable name");
@@ -369,7 +378,7 @@ class SceneReader {
   JsonAccess js_;
   fs::path dir_;
   json root_;
-  bool scene_degrees_ = true;
+  AngleUnit angle_unit_ = AngleUnit::Degree;
   MechanismBuilder<double> builder_;
   std::vector<PairInput> inputs_;
 };
@@ -377,12 +386,12 @@ class SceneReader {
 }  // namespace
 
 double Scene::unit_of(int variable) const {
-  return degrees && mechanism.variables[variable].kind == ParamKind::Angle ? pi<double>() / 180 : 1.0;
+  return mechanism.variables[variable].kind == ParamKind::Angle ? radians_per<double>(angle_unit) : 1.0;
 }
 
 std::string Scene::unit_label(int variable) const {
   switch (mechanism.variables[variable].kind) {
-    case ParamKind::Angle: return degrees ? "deg" : "rad";
+    case ParamKind::Angle: return io::unit_label(angle_unit);
     case ParamKind::Length: return length_unit;
     case ParamKind::Unitless: return "";
   }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
+#include "rollkin/io/units.hpp"
 #include "rollkin/kinematics.hpp"
 #include "rollkin/solve/sweep_grid.hpp"
 
@@ -35,12 +36,14 @@ struct Scene {
   std::vector<int> held;             // variables held at their given value during assembly
   std::optional<Sweep> sweep;        // the scene's "sweep", if any
   std::string file;                  // the scene file's path as given
-  std::string length_unit = "m";     // label only
-  bool degrees = true;               // the file's angle unit
+  std::string length_unit = "m";     // label of lengths in outputs: units.length, "m" when not given
+  LengthUnit length = LengthUnit::Unitless;  // units.length; Unitless when not given (numbers as they are)
+  AngleUnit angle_unit = AngleUnit::Degree;  // units.angle: the unit of every angle in the file
   std::vector<std::string> inputs;   // full names of the drivers, in "inputs" order
   std::vector<std::string> files_read;  // every contour file read (point files, SVG), as opened
 
-  /// Internal units per file unit of variable i: pi/180 for angles in a "deg" file, else 1.
+  /// Internal units per file unit of variable i: radians_per(angle_unit) for angles (pi/180 in a "deg"
+  /// file), else 1.
   double unit_of(int variable) const;
   /// Short unit label of variable i in the file's units: "deg", "rad", the length unit, or "".
   std::string unit_label(int variable) const;

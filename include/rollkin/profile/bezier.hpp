@@ -19,6 +19,7 @@
 // accepted; such a point has zero speed, it is reported by stationary_params().
 #pragma once
 
+#include "rollkin/io/units.hpp"
 #include "rollkin/profile/jet.hpp"
 #include "rollkin/profile/piecewise_arc_length.hpp"
 #include "rollkin/profile/quadrature.hpp"

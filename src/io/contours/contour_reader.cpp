@@ -7,8 +7,6 @@ namespace rollkin::io {
 
 namespace fs = std::filesystem;
 
-double ContourContext::angle(double file_value) const { return degrees_ ? deg_to_rad(file_value) : file_value; }
-
 void ContourContext::keys(const json& c, const std::string& path, std::vector<std::string> extra) const {
   static const std::vector<std::string> common = {"name", "type", "at", "material"};
   extra.insert(extra.begin(), common.begin(), common.end());

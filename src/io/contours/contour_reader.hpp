@@ -21,16 +21,17 @@ namespace rollkin::io {
 /// checks shared by several kinds.
 class ContourContext {
  public:
-  ContourContext(const JsonAccess& access, std::filesystem::path scene_dir, bool degrees,
+  ContourContext(const JsonAccess& access, std::filesystem::path scene_dir, AngleUnit angle_unit, LengthUnit length_unit,
                  std::vector<std::string>& files_read)
-      : js(access), dir_(std::move(scene_dir)), degrees_(degrees), files_read_(files_read) {}
+      : js(access), dir_(std::move(scene_dir)), angle_unit_(angle_unit), length_unit_(length_unit), files_read_(files_read) {}
 
   const JsonAccess& js;
 
   /// An angle of the file in radians.
-  double angle(double file_value) const;
-  /// The unit name of the file's angles, for messages: "degrees" or "radians".
-  bool degrees() const { return degrees_; }
+  double angle(double file_value) const { return to_radians(file_value, angle_unit_); }
+  /// The scene's length unit (units.length; Unitless when not given). A contour file that declares its
+  /// unit converts its coordinates by length_factor(file unit, length_unit()) (io/units.hpp).
+  LengthUnit length_unit() const { return length_unit_; }
 
   /// Checks that the contour object has only the keys common to all contours and `extra`.
   void keys(const json& c, const std::string& path, std::vector<std::string> extra) const;
@@ -47,7 +48,8 @@ class ContourContext {
 
  private:
   std::filesystem::path dir_;
-  bool degrees_;
+  AngleUnit angle_unit_;
+  LengthUnit length_unit_;
   std::vector<std::string>& files_read_;
 };
 
