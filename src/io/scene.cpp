@@ -4,6 +4,7 @@
 
 #include "rollkin/geometry/contact.hpp"
 #include "rollkin/geometry/validation.hpp"
+#include "rollkin/io/json_document.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/io/svg_path.hpp"
 
@@ -63,29 +64,6 @@ std::string fmt(double v) {
   return os.str();
 }
 
-/// 1-based line:column of the byte index reported by nlohmann (index of the last character read).
-std::string line_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, col = 1;
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return std::to_string(line) + ":" + std::to_string(col);
-}
-
-/// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
-std::string parse_message(const std::string& what) {
-  const std::size_t col = what.find("column ");
-  std::size_t from = col == std::string::npos ? what.find("] ") : what.find(": ", col);
-  if (from == std::string::npos) return what;
-  return what.substr(from + 2);
-}
-
 struct ContactInfo {
   bool has_values = false;
 };
@@ -120,41 +98,7 @@ class SceneReader {
   }
 
   json parse(const std::string& text) {
-    // Duplicate keys are silently merged by JSON parsers; catch them with a callback tracking each object's
-    // keys (the path given is that of the enclosing keys, without array indices).
-    std::vector<std::set<std::string>> seen;
-    std::vector<std::string> keys;
-    std::string duplicate, where;
-    json::parser_callback_t cb = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
-      switch (event) {
-        case json::parse_event_t::object_start: seen.emplace_back(); break;
-        case json::parse_event_t::object_end:
-          if (!seen.empty()) seen.pop_back();
-          if (!keys.empty() && keys.size() > seen.size()) keys.pop_back();
-          break;
-        case json::parse_event_t::key: {
-          const std::string k = parsed.get<std::string>();
-          if (!seen.empty() && !seen.back().insert(k).second && duplicate.empty()) {
-            duplicate = k;
-            where = join(keys, ".");
-          }
-          if (keys.size() >= seen.size() && !keys.empty()) keys.back() = k;
-          else keys.push_back(k);
-          break;
-        }
-        default: break;
-      }
-      return true;
-    };
-    json j;
-    try {
-      j = json::parse(text, cb);
-    } catch (const json::parse_error& e) {
-      fail(line_column(text, e.byte), "malformed JSON: " + parse_message(e.what()) +
-                                          "; expected a JSON object as described in docs/scene_format.md");
-    }
-    if (!duplicate.empty())
-      fail(where, "duplicate key \"" + duplicate + "\" in one object; each key may appear only once");
+    json j = parse_json_document(text, file_);
     if (!j.is_object()) fail("", "the scene must be a JSON object, got " + kind_of(j));
     return j;
   }
@@ -435,11 +379,14 @@ class SceneReader {
       const json* p = get(c, "points");
       if ((f != nullptr) == (p != nullptr)) fail(path, "expected exactly one of \"file\" (a point file) or \"points\" (inline [[x, y], ...])");
       std::vector<Vec2<double>> pts;
+      std::vector<std::size_t> lines;  // of the point file, one per point: messages name them
       std::string source;
       if (f) {
         source = contour_file(*f, child(path, "file"), scene);
         try {
-          pts = read_point_file(source, kMinSplineSamples, scale);
+          PointSamples read = read_point_samples(source, kMinSplineSamples, scale);
+          pts = std::move(read.points);
+          lines = std::move(read.lines);
         } catch (const InputError& e) {
           fail(child(path, "file"), e.what());
         }
@@ -454,7 +401,9 @@ class SceneReader {
       const double area = closed ? signed_area(pts) : 0.0;
       const geometry::MaterialSide as_drawn = area >= 0 ? geometry::MaterialSide::Left : geometry::MaterialSide::Right;
       try {
-        geometry::throw_if_invalid(geometry::validate_polyline(pts, closed, as_drawn, kValidationTolerance), source);
+        const auto report = geometry::validate_polyline(pts, closed, as_drawn, kValidationTolerance);
+        geometry::throw_if_invalid(report, source, lines);
+        if (report.dropped_closing_repeat) pts.pop_back();  // closed: the first point repeated at the end
       } catch (const std::runtime_error& e) {
         fail(path, std::string("invalid sampled contour: ") + e.what());
       }
@@ -615,6 +564,9 @@ class SceneReader {
         if (const json* h = get(p, "hold")) {
           array(*h, child(path, "hold"), "two flags [hold u, hold v]", 2);
           for (int j = 0; j < 2; ++j) in.hold[j] = boolean((*h)[j], index(child(path, "hold"), j), "whether to hold the variable during assembly");
+          if ((in.hold[0] || in.hold[1]) && !in.has_values)
+            fail(child(path, "hold"), "\"hold\" needs \"values\": a held variable keeps its given value during "
+                                      "assembly; give \"values\": [u0, v0] or drop \"hold\"");
         }
       }
       m.pairs.push_back(pair);
