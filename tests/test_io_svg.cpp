@@ -516,3 +516,13 @@ BOOST_AUTO_TEST_CASE(charts_nested_in_one_document_clip_to_their_own_plot_area) 
   BOOST_TEST(clip_id(sa) != clip_id(sb));
   BOOST_TEST(sb.find("url(#" + clip_id(sb) + ")") != std::string::npos);
 }
+
+BOOST_AUTO_TEST_CASE(control_characters_and_stray_bytes_stay_out_of_the_xml) {
+  // XML 1.0 allows neither control characters (not even as &#1;) nor bytes that are not UTF-8: before,
+  // a name holding them made the plot unreadable to XML parsers.
+  BOOST_TEST(xml_escape("a\x01<b>\n&\"'\x7f") == "a\\x01&lt;b&gt;\\n&amp;&quot;&apos;\\x7f");
+  BOOST_TEST(xml_escape("\xff\xc3(") == "\\xff\\xc3(");                     // invalid UTF-8
+  BOOST_TEST(xml_escape("\xed\xa0\x80") == "\\xed\\xa0\\x80");               // a UTF-16 surrogate
+  BOOST_TEST(xml_escape("\xef\xbf\xbf") == "\\xef\\xbf\\xbf");               // U+FFFF
+  BOOST_TEST(xml_escape("\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80") == "\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80");  // e-acute, euro, emoji
+}
