@@ -134,11 +134,11 @@ template ReferenceSweep reference_sweep_mp<mpfr_scalar<100>>(const Mechanism<mpf
 
 // ---- CSV -----------------------------------------------------------------------------------------------
 
-void write_reference_csv(const ReferenceSweep& ref, const Mechanism<double>& mech, const std::string& path) {
-  if (mech.drivers.empty()) throw std::invalid_argument("write_reference_csv: the mechanism has no driver");
+std::string reference_csv_text(const ReferenceSweep& ref, const Mechanism<double>& mech) {
+  if (mech.drivers.empty()) throw std::invalid_argument("reference_csv_text: the mechanism has no driver");
   const int input = mech.drivers[0];
   if (static_cast<int>(ref.variables.size()) != mech.variable_count())
-    throw std::invalid_argument("write_reference_csv: the sweep does not belong to this mechanism");
+    throw std::invalid_argument("reference_csv_text: the sweep does not belong to this mechanism");
   std::ostringstream os;
   os << ref.variables[input];
   for (int i = 0; i < mech.variable_count(); ++i)
@@ -151,7 +151,11 @@ void write_reference_csv(const ReferenceSweep& ref, const Mechanism<double>& mec
       if (i != input) os << ',' << (ok ? p.q[i] : std::string("nan"));
     os << ',' << (ok ? p.residual : std::string("nan")) << ',' << to_string(p.status) << '\n';
   }
-  io::write_file_atomic(path, os.str());
+  return os.str();
+}
+
+void write_reference_csv(const ReferenceSweep& ref, const Mechanism<double>& mech, const std::string& path) {
+  io::write_file_atomic(path, reference_csv_text(ref, mech));
 }
 
 int ReferenceTable::column(const std::string& name) const {

@@ -84,3 +84,49 @@ BOOST_AUTO_TEST_CASE(missing_file_is_an_input_error) {
     BOOST_TEST(contains(e.what(), "/nonexistent/dir/shape.txt: cannot open the point file"));
   }
 }
+
+BOOST_AUTO_TEST_CASE(encodings_line_ends_and_decimal_commas_say_what_to_do) {
+  // Before: CR-only files read as one line ("a third column"), UTF-16 as "expected two numbers" with NUL
+  // bytes in the message, decimal commas as a third or fourth column.
+  const std::string cr = error_for("mac.txt", "0 0\r1 1\r2 0\r");
+  BOOST_TEST(contains(cr, "mac.txt:1: line ends are a bare CR"));
+  BOOST_TEST(contains(cr, "convert them"));
+  BOOST_TEST(contains(error_for("mixed.txt", "0 0\n1 1\n2 0\r3 3\n"), "mixed.txt:3: line ends are a bare CR"));
+  BOOST_TEST(error_for("crlf.txt", "0 0\r\n1 1\r\n") == "");  // CR LF is fine
+
+  std::string utf16 = "\xFF\xFE";
+  for (char c : std::string("0 0\n1 1\n")) utf16 += std::string{c, '\0'};
+  const std::string u16 = error_for("u16.txt", utf16);
+  BOOST_TEST(contains(u16, "u16.txt: the file is UTF-16 text (byte order mark FF FE)"));
+  BOOST_TEST(contains(u16, "save it as plain text"));
+  BOOST_TEST(contains(error_for("u16be.txt", "\xFE\xFF\0" "0"), "byte order mark FE FF"));
+  BOOST_TEST(contains(error_for("nul.txt", std::string("0 0\n1\0 1\n", 9)), "nul.txt:2: the file holds NUL bytes"));
+
+  const std::string comma = error_for("comma_dec.txt", "0 0\n1,5 2,25\n");
+  BOOST_TEST(contains(comma, "comma_dec.txt:2: \"1,5 2,25\" looks like two numbers written with decimal commas"));
+  BOOST_TEST(contains(comma, "write decimal points (\"1.5 2.25\")"));
+  BOOST_TEST(contains(error_for("comma_semi.txt", "0 0\n-1,5;2,25\n"), "decimal commas"));
+  // "1,2" is x = 1, y = 2 (',' separates columns), as before.
+  BOOST_TEST(error_for("comma_sep.txt", "0 0\n1,2\n") == "");
+
+  const std::string three = error_for("xyz.txt", "0 0 0\n1 1 0\n");
+  BOOST_TEST(contains(three, "xyz.txt:1: expected two numbers \"x y\", got a third column in \"0 0 0\""));
+  BOOST_TEST(contains(three, "keep the x and y columns only"));
+  BOOST_TEST(contains(error_for("four.txt", "0 0 0 0\n"), "4 columns"));
+}
+
+BOOST_AUTO_TEST_CASE(long_or_control_character_lines_are_quoted_readably) {
+  const std::string msg = error_for("long.txt", "0 0\n1 " + std::string(100000, 'x') + "\n");
+  BOOST_TEST(contains(msg, "long.txt:2:"));
+  BOOST_TEST(contains(msg, "xxx..."));
+  BOOST_TEST(msg.size() < 400u);
+  const std::string ctrl = error_for("ctrl.txt", "0 0\n1 a\x1b[2J\n");
+  BOOST_TEST(contains(ctrl, "\"1 a\\x1b[2J\""));
+  BOOST_TEST(ctrl.find('\x1b') == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(samples_come_with_their_lines) {
+  const auto s = rollkin::read_point_samples(write_temp("lines.txt", "# c\nx y\n0 0\n\n1 1 # c\n2 0\n"), 2);
+  BOOST_TEST(s.points.size() == 3u);
+  BOOST_TEST(s.lines == (std::vector<std::size_t>{3, 5, 6}), boost::test_tools::per_element());
+}

@@ -237,7 +237,7 @@ BOOST_AUTO_TEST_CASE(duplicate_names) {
                "duplicate link name \"link2\"");
   expect_error("dup_pair.json", paper_with("{\"name\": \"B\",", "{\"name\": \"A\","), "pairs[2].name",
                "duplicate pair name \"A\"");
-  expect_error("dup_key.json", paper_with("\"radius\": 1}", "\"radius\": 1, \"radius\": 2}"), "links.contours",
+  expect_error("dup_key.json", paper_with("\"radius\": 1}", "\"radius\": 1, \"radius\": 2}"), "links[2].contours[0].radius",
                "duplicate key \"radius\"");
   expect_error("dup_ground.json", paper_with("{\"name\": \"link2\",", "{\"name\": \"link2\", \"ground\": true,"),
                "links[1].ground", "exactly one ground link");
@@ -266,7 +266,8 @@ BOOST_AUTO_TEST_CASE(contact_located_when_values_are_omitted) {
   BOOST_TEST(s.guess(2) == 0.0, boost::test_tools::tolerance(1e-2));
   BOOST_TEST(std::abs(rollkin::wrap_angle(s.guess(3) - rollkin::pi<double>())) < 1e-2);
   // A contact pair on the spanning tree cannot be located: "values" required.
-  expect_error("paper_no_values.json", paper_with("\"values\": [0, 180], ", ""), "pairs[1]", "\"values\" required");
+  expect_error("paper_no_values.json", paper_with(", \"values\": [0, 180], \"hold\": [true, true]", ""), "pairs[1]",
+               "\"values\" required");
 }
 
 // ---- bad sample files through the scene (CGAL validation at the input boundary) ---------------------------
@@ -291,7 +292,8 @@ BOOST_AUTO_TEST_CASE(duplicate_and_self_intersecting_samples_name_the_file_and_s
   write_temp("disk_duplicate.txt", circle(64, 10, false));
   const std::string dup = error_for("dup_samples.json", scene_with("disk_duplicate.txt"));
   BOOST_TEST(contains(dup, "disk_duplicate.txt"));
-  BOOST_TEST(contains(dup, "samples 10 and 11 coincide"));
+  // Named by the lines of the point file (the 11th and 12th lines), not by 0-based sample indices.
+  BOOST_TEST(contains(dup, "the points on lines 11 and 12 coincide"));
   write_temp("disk_eight.txt", circle(64, -1, true));
   const std::string eight = error_for("eight_samples.json", scene_with("disk_eight.txt"));
   BOOST_TEST(contains(eight, "disk_eight.txt"));
@@ -318,4 +320,66 @@ BOOST_AUTO_TEST_CASE(unknown_length_unit_names_the_accepted_ones) {
                "unknown length unit \"furlong\"; expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\"");
   expect_error("metre.json", paper_with("\"length\": \"m\"", "\"length\": \"metre\""), "units.length", "\"mm\", \"in\"");
   expect_error("length_type.json", paper_with("\"length\": \"m\"", "\"length\": 1"), "units.length", "(a string), got a number");
+}
+
+BOOST_AUTO_TEST_CASE(closed_point_file_repeating_its_first_point_to_round_off_is_the_same_contour) {
+  // 64 samples of the unit circle; the same with the first point repeated at the end, exactly and to
+  // round-off (1e-13, far below the 1e-9 coincidence tolerance). The repeat must be dropped: the contours
+  // must be the same spline (a kept repeat is a 1e-13 segment that bends the spline near the closure).
+  auto circle = [](const std::string& repeat) {
+    std::ostringstream os;
+    os.precision(17);
+    for (int k = 0; k < 64; ++k) os << std::cos(2 * 3.141592653589793 * k / 64) << " " << std::sin(2 * 3.141592653589793 * k / 64) << "\n";
+    return os.str() + repeat;
+  };
+  auto contour_of = [](const std::string& file, const std::string& text) {
+    write_temp(file, text);
+    const Scene s = load_scene(write_temp(file + ".json", paper_with("{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 1}",
+                                                                     "{\"name\": \"rim\", \"type\": \"samples\", \"file\": \"" + file + "\", \"closed\": true}")));
+    return s.mechanism.contours[s.mechanism.find_contour("link3.rim")];
+  };
+  const auto plain = contour_of("disk64.txt", circle(""));
+  for (const std::string repeat : {"1 0\n", "1.0000000000001 1e-14\n"}) {
+    const auto repeated = contour_of("disk64_repeat.txt", circle(repeat));
+    BOOST_TEST_CONTEXT("repeat " << repeat) {
+      BOOST_TEST(repeated.domain().hi == plain.domain().hi, boost::test_tools::tolerance(1e-12));
+      double worst = 0;
+      for (int i = 0; i < 640; ++i) {
+        const double u = plain.domain().sample(i, 640);
+        // kappa = (x' y'' - y' x'') / |p'|^3
+        auto kappa = [u](const auto& c) {
+          const auto j = c.jet(u, 2);
+          return (j.d1.x() * j.d2.y() - j.d1.y() * j.d2.x()) / std::pow(j.d1.norm(), 3);
+        };
+        worst = std::max(worst, std::abs(kappa(repeated) - kappa(plain)));
+      }
+      BOOST_TEST(worst < 1e-6);  // curvature of the unit circle is 1
+    }
+  }
+  // A point file line is named in the error about it: an open contour folding back.
+  write_temp("fold.txt", "# header comment\nx y\n0 0\n1 0\n2 0\n1 0\n3 1\n");
+  const std::string fold = error_for("fold.json", paper_with("{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 1}",
+                                                             "{\"name\": \"rim\", \"type\": \"samples\", \"file\": \"fold.txt\"}"));
+  BOOST_TEST(contains(fold, "fold.txt"));
+  BOOST_TEST(contains(fold, "line 5"));
+}
+
+BOOST_AUTO_TEST_CASE(hold_needs_values) {
+  // Before: accepted, then "the loops cannot be closed" at assembly.
+  expect_error("hold_no_values.json", paper_with("\"values\": [-3, 117]", "\"hold\": [true, false]"), "pairs[2].hold",
+               "\"hold\" needs \"values\"");
+  expect_error("hold_no_values2.json", paper_with("\"values\": [-3, 117]", "\"hold\": [false, true]"), "pairs[2].hold",
+               "give \"values\": [u0, v0] or drop \"hold\"");
+  BOOST_CHECK_NO_THROW(load_scene(write_temp("hold_false.json", paper_with("\"values\": [-3, 117]", "\"hold\": [false, false]"))));
+}
+
+BOOST_AUTO_TEST_CASE(json_errors_carry_line_column_and_full_path) {
+  const std::string big = error_for("big.json", paper_with("\"radius\": 4,", "\"radius\": 1e400,"));
+  BOOST_TEST(contains(big, "big.json:10:84: number 1e400 at links[3].contours[0].radius is out of the range of a double"));
+  const std::string dup = error_for("dupkey.json", paper_with("\"radius\": 4,", "\"radius\": 4, \"radius\": 5,"));
+  BOOST_TEST(contains(dup, "dupkey.json:10:90: duplicate key \"radius\" at links[3].contours[0].radius"));
+  const std::size_t n = 1000000;
+  const std::string deep = error_for("deep.json", paper_with("\"radius\": 4,", "\"radius\": 4, \"x\": " + std::string(n, '[') + std::string(n, ']') + ","));
+  BOOST_TEST(contains(deep, "deep.json:10:"));
+  BOOST_TEST(contains(deep, "nested deeper than 256 levels at links[3].contours[0].x[0][0]"));
 }

@@ -238,7 +238,7 @@ BOOST_AUTO_TEST_CASE(chart_written_and_well_formed) {
   fs::remove(file);
   chart.write(file.string());
   BOOST_REQUIRE(fs::exists(file));
-  BOOST_TEST(!fs::exists(temporary_path(file.string())));
+  BOOST_TEST(rollkin::testing::no_temporaries_in(file.parent_path()));
   const std::string doc = read_file(file);
   BOOST_TEST(doc == chart.to_svg());
   const auto els = parse_xml(doc);
@@ -462,7 +462,7 @@ BOOST_AUTO_TEST_CASE(missing_directory_leaves_no_file) {
     BOOST_TEST(msg.find(file.string()) != std::string::npos);
   }
   BOOST_TEST(!fs::exists(file));
-  BOOST_TEST(!fs::exists(temporary_path(file.string())));
+  BOOST_TEST(rollkin::testing::no_temporaries_in(file.parent_path()));
   BOOST_TEST(!fs::exists(dir));
 
   SvgDrawing d;
@@ -479,7 +479,7 @@ BOOST_AUTO_TEST_CASE(replace_is_complete_and_failed_rename_keeps_target) {
   d.add_polyline({{0, 0}, {1, 1}});
   d.write(file.string());
   BOOST_TEST(read_file(file) == d.to_svg());
-  BOOST_TEST(!fs::exists(temporary_path(file.string())));
+  BOOST_TEST(rollkin::testing::no_temporaries_in(file.parent_path()));
 
   // Target is a non-empty directory: the temporary is written but the rename fails; nothing is left behind
   // and the directory is untouched.
@@ -492,7 +492,7 @@ BOOST_AUTO_TEST_CASE(replace_is_complete_and_failed_rename_keeps_target) {
     BOOST_TEST(std::string(e.what()).find(dir.string()) != std::string::npos);
   }
   BOOST_TEST(fs::is_directory(dir / "inside"));
-  BOOST_TEST(!fs::exists(temporary_path(dir.string())));
+  BOOST_TEST(rollkin::testing::no_temporaries_in(dir.parent_path()));
   BOOST_CHECK_THROW(write_file_atomic("", "x"), std::runtime_error);
 }
 
@@ -515,4 +515,14 @@ BOOST_AUTO_TEST_CASE(charts_nested_in_one_document_clip_to_their_own_plot_area) 
   const std::string sa = a.to_svg(), sb = b.to_svg();
   BOOST_TEST(clip_id(sa) != clip_id(sb));
   BOOST_TEST(sb.find("url(#" + clip_id(sb) + ")") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(control_characters_and_stray_bytes_stay_out_of_the_xml) {
+  // XML 1.0 allows neither control characters (not even as &#1;) nor bytes that are not UTF-8: before,
+  // a name holding them made the plot unreadable to XML parsers.
+  BOOST_TEST(xml_escape("a\x01<b>\n&\"'\x7f") == "a\\x01&lt;b&gt;\\n&amp;&quot;&apos;\\x7f");
+  BOOST_TEST(xml_escape("\xff\xc3(") == "\\xff\\xc3(");                     // invalid UTF-8
+  BOOST_TEST(xml_escape("\xed\xa0\x80") == "\\xed\\xa0\\x80");               // a UTF-16 surrogate
+  BOOST_TEST(xml_escape("\xef\xbf\xbf") == "\\xef\\xbf\\xbf");               // U+FFFF
+  BOOST_TEST(xml_escape("\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80") == "\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80");  // e-acute, euro, emoji
 }

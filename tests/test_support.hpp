@@ -33,6 +33,15 @@ inline std::string read_text(const std::filesystem::path& path) {
   return s.str();
 }
 
+/// True if `dir` (if it exists) holds no temporary output file: no name starting with '.', which is how
+/// io::OutputSet names its temporaries (".NAME.XXXXXX", made by mkstemp).
+inline bool no_temporaries_in(const std::filesystem::path& dir) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind('.', 0) == 0) return false;
+  return true;
+}
+
 /// The message of the InputError that `f()` throws, or "" if it throws none.
 template <class F> std::string input_error_of(F&& f) {
   try {

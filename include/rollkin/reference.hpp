@@ -91,6 +91,9 @@ ReferenceSweep reference_sweep_mp(const Mechanism<S>& mech, const VectorX<S>& gu
 /// Written atomically (io/atomic_file.hpp); throws std::runtime_error if the file cannot be written.
 void write_reference_csv(const ReferenceSweep& ref, const Mechanism<double>& mech, const std::string& path);
 
+/// The same CSV as text (for writing it with other outputs, all or nothing: io/output_set.hpp).
+std::string reference_csv_text(const ReferenceSweep& ref, const Mechanism<double>& mech);
+
 /// Reads a file written by write_reference_csv: the header's column names and the rows' fields as written.
 /// Throws std::runtime_error if the file cannot be read or a row has the wrong number of fields.
 struct ReferenceTable {

@@ -8,10 +8,11 @@
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed): one line
 // per limit on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
 // an output that would overwrite an input, an output that cannot be written): the message on stderr and no
-// output file written.
+// output file written; 3 out of memory ("out of memory while ..."), no output file written. Outputs are all
+// or nothing (rollkin/io/output_set.hpp).
 #include "output.hpp"
 
-#include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -23,6 +24,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -41,6 +43,9 @@ using namespace rollkin;
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// What the run is doing, for the message of an allocation failure ("out of memory while ...").
+const char* g_doing = "starting";
 
 struct Options {
   std::string command;  // "solve" or "reference"
@@ -77,7 +82,7 @@ const char* kUsage =
     "writes the poses as decimal strings (columns as the solve CSV without link poses): reference data for\n"
     "regression tests and for measuring the double solver's error.\n"
     "Exit status: 0 all requested poses solved; 1 some not (limits on stderr, solved rows still written);\n"
-    "2 bad input or command line (nothing written).\n";
+    "2 bad input or command line (nothing written); 3 out of memory (nothing written).\n";
 
 double parse_value(const std::string& opt, const std::string& text) {
   char* end = nullptr;
@@ -149,33 +154,24 @@ io::Sweep requested_sweep(const io::Scene& scene, const Options& o) {
   return s;
 }
 
-/// Key identifying a file for "same file" checks.
-std::string file_key(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::absolute(path).lexically_normal().string() : p.string();
-}
+/// The output files of the command line, each checked against the files the run read and against each
+/// other before anything is solved; written all or nothing at the end.
+struct Outputs {
+  io::OutputSet set;
+  std::optional<std::size_t> csv, plot, draw;
 
-void check_outputs(const io::Scene& scene, const Options& o) {
-  std::vector<std::pair<std::string, std::string>> inputs{{scene.file, "the scene file"}};
-  for (const auto& f : scene.files_read) inputs.push_back({f, "a contour file read by the scene"});
-  std::vector<std::pair<std::string, std::string>> outputs;
-  if (!o.csv.empty()) outputs.push_back({"--csv", o.csv});
-  if (!o.plot.empty()) outputs.push_back({"--plot", o.plot});
-  if (!o.draw.empty()) outputs.push_back({"--draw", o.draw});
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const std::string key = file_key(outputs[i].second);
-    for (const auto& in : inputs) {
-      std::error_code ec;
-      if (key == file_key(in.first) || fs::equivalent(outputs[i].second, in.first, ec))
-        throw UsageError("refusing to write " + outputs[i].first + " " + outputs[i].second + ": it is " + in.second +
-                         " (" + in.first + "); inputs are never overwritten");
-    }
-    for (std::size_t j = 0; j < i; ++j)
-      if (key == file_key(outputs[j].second))
-        throw UsageError(outputs[i].first + " and " + outputs[j].first + " name the same file " + outputs[i].second);
+  Outputs(const io::Scene& scene, const Options& o) : set(files_read(scene)) {
+    if (!o.csv.empty()) csv = set.add("--csv", o.csv);
+    if (!o.plot.empty()) plot = set.add("--plot", o.plot);
+    if (!o.draw.empty()) draw = set.add("--draw", o.draw);
   }
-}
+
+  static std::vector<std::string> files_read(const io::Scene& scene) {
+    std::vector<std::string> files{scene.file};
+    files.insert(files.end(), scene.files_read.begin(), scene.files_read.end());
+    return files;
+  }
+};
 
 std::string fmt(double v, int digits = 6) {
   char buf[64];
@@ -240,10 +236,11 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
 }
 
 /// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
-int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o) {
+int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o, Outputs& out) {
   const Mechanism<double>& m = scene.mechanism;
   const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
   ReferenceSweep ref;
+  g_doing = "computing the reference sweep in MPFR";
   if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
     std::vector<std::string> values;
     for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
@@ -251,7 +248,9 @@ int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o)
   } else {
     ref = reference_sweep(m, scene.guess, scene.held, sw.driver, io::sweep_inputs(sw), o.digits);
   }
-  write_reference_csv(ref, m, o.csv);
+  g_doing = "writing the output file";
+  out.set.set(*out.csv, reference_csv_text(ref, m));
+  out.set.commit();
   std::size_t solved = 0;
   for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
   std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
@@ -291,37 +290,40 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
 }
 
 int run(const Options& o) {
+  g_doing = "reading the scene";
   const io::Scene scene = io::load_scene(o.scene);
-  if (o.command == "reference") {
-    check_outputs(scene, o);
-    return run_reference(scene, requested_sweep(scene, o), o);
-  }
-  check_outputs(scene, o);
+  g_doing = "checking the output files";
+  Outputs out(scene, o);
+  if (o.command == "reference") return run_reference(scene, requested_sweep(scene, o), o, out);
   const io::Sweep sw = requested_sweep(scene, o);
   const std::vector<double> inputs = io::sweep_inputs(sw);
   const Mechanism<double>& m = scene.mechanism;
 
+  g_doing = "assembling the mechanism";
   SolveData<double> sd(m);
   VectorX<double> q = scene.guess;
   const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
   const cli::AssemblyRank ar = cli::full_rank(m, sd);
-  if (o.verbose) print_assembly(scene, assembly, ar);
   // Inconsistent constraints at assembly are a problem of the scene (sizes, frames, values), not a motion
-  // limit: treated like any other bad input (exit 2, nothing written).
+  // limit: treated like any other bad input (exit 2, nothing written, no report left on stdout).
   if (assembly.status == SolveStatus::CannotAssemble)
     throw InputError(scene.file, "pairs",
                      "the mechanism cannot be assembled: " + assembly.detail +
                          "; expected pair frames, contour sizes and \"values\" that let every loop close");
+  if (o.verbose) print_assembly(scene, assembly, ar);
+  g_doing = "solving the sweep";
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
 
-  // Everything is computed before anything is written.
+  // Everything is computed before anything is written, and then written all or nothing.
+  g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(sw);
   cli::OutputContext ctx{scene, sw, result, file_values};
-  std::vector<std::pair<std::string, std::string>> files;
-  if (!o.csv.empty()) files.push_back({o.csv, cli::csv_text(ctx, o.rates)});
-  if (!o.plot.empty()) files.push_back({o.plot, cli::plot_svg(ctx)});
-  if (!o.draw.empty()) files.push_back({o.draw, cli::draw_svg(ctx)});
-  for (const auto& f : files) io::write_file_atomic(f.first, f.second);
+  if (out.csv) out.set.set(*out.csv, cli::csv_text(ctx, o.rates));
+  if (out.plot) out.set.set(*out.plot, cli::plot_svg(ctx));
+  if (out.draw) out.set.set(*out.draw, cli::draw_svg(ctx));
+  g_doing = "writing the output files";
+  out.set.commit();
+  g_doing = "reporting";
 
   std::size_t solved = 0;
   double max_residual = 0;
@@ -378,6 +380,10 @@ int main(int argc, char** argv) {
       }
     }
     return run(parse_args(args));
+  } catch (const std::bad_alloc&) {
+    std::cerr << "rollkin: out of memory while " << g_doing
+              << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
+    return 3;
   } catch (const UsageError& e) {
     std::cerr << "rollkin: " << e.what() << "\n(rollkin --help for usage)\n";
     return 2;

@@ -289,36 +289,51 @@ std::string fmt(double x) {
 
 std::string fmt(const Vec2<double>& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
 
-std::string segment_name(std::size_t i, std::size_t n) {
-  return "segment " + std::to_string(i) + " (samples " + std::to_string(i) + " to " + std::to_string((i + 1) % n) +
-         ")";
-}
+/// Names samples in messages: "sample 12", or "line 14" when the samples came from a file with those lines.
+struct SampleNames {
+  const std::vector<std::size_t>& lines;
+  std::string one(std::size_t i) const {
+    return i < lines.size() ? "the point on line " + std::to_string(lines[i]) : "sample " + std::to_string(i);
+  }
+  std::string two(std::size_t i, std::size_t j) const {
+    return i < lines.size() && j < lines.size()
+               ? "the points on lines " + std::to_string(lines[i]) + " and " + std::to_string(lines[j])
+               : "samples " + std::to_string(i) + " and " + std::to_string(j);
+  }
+  std::string segment(std::size_t i, std::size_t n) const {
+    const std::size_t j = (i + 1) % n;
+    return "segment " + std::to_string(i) +
+           (i < lines.size() && j < lines.size()
+                ? " (lines " + std::to_string(lines[i]) + " to " + std::to_string(lines[j]) + ")"
+                : " (samples " + std::to_string(i) + " to " + std::to_string(j) + ")");
+  }
+};
 
-std::string describe(const ValidationIssue& i, const ValidationReport& r) {
+std::string describe(const ValidationIssue& i, const ValidationReport& r, const SampleNames& name) {
   const std::size_t n = r.sample_count;
   switch (i.kind) {
     case IssueKind::TooFewSamples:
       return "only " + std::to_string(i.first) + " usable samples; " + (r.closed ? "a closed" : "an open") +
              " contour needs at least " + fmt(i.limit);
     case IssueKind::NonFiniteSample:
-      return "sample " + std::to_string(i.first) + " has a non-finite coordinate " + fmt(i.point) +
+      return name.one(i.first) + " has a non-finite coordinate " + fmt(i.point) +
              "; every coordinate must be a finite number";
     case IssueKind::CoincidentSamples:
-      return "samples " + std::to_string(i.first) + " and " + std::to_string(i.second) +
+      return name.two(i.first, i.second) +
              (i.second == 0 ? " (the implicit closing segment)" : "") + " coincide (distance " + fmt(i.value) +
              (i.value < i.limit ? " < " : " <= ") + fmt(r.rel_tol) + " of the contour size); remove one";
     case IssueKind::SelfIntersection:
-      return segment_name(i.first, n) + " and " + segment_name(i.second, n) + " cross at " + fmt(i.point) +
+      return name.segment(i.first, n) + " and " + name.segment(i.second, n) + " cross at " + fmt(i.point) +
              "; a contour must not intersect itself: fix the sample order or remove the loop";
     case IssueKind::FoldsBack:
-      return "the contour folds back at sample " + std::to_string(i.first) + " " + fmt(i.point) +
+      return "the contour folds back at " + name.one(i.first) + " " + fmt(i.point) +
              " (its neighbours lie on the same side of it, on one line); remove the sample or its spike";
     case IssueKind::OpenEndsMeet:
       return "warning: the first and last samples of this open contour coincide (distance " + fmt(i.value) +
              "); if it is meant to be closed, declare it closed and drop the last sample";
     case IssueKind::LongClosingSegment:
-      return "warning: the implicit closing segment from sample " + std::to_string(i.first) +
-             " back to sample 0 is " + fmt(i.value) +
+      return "warning: the implicit closing segment from " + name.one(i.first) +
+             " back to the first one is " + fmt(i.value) +
              " times as long as the longest other segment; if the contour is open, declare it open, "
              "otherwise add samples along that gap";
     case IssueKind::WrongMaterialSide: {
@@ -333,16 +348,19 @@ std::string describe(const ValidationIssue& i, const ValidationReport& r) {
 
 }  // namespace
 
-std::vector<std::string> describe_issues(const ValidationReport& report, const std::string& file) {
+std::vector<std::string> describe_issues(const ValidationReport& report, const std::string& file,
+                                         const std::vector<std::size_t>& sample_lines) {
   std::vector<std::string> lines;
-  for (const auto& issue : report.issues) lines.push_back(file + ": " + describe(issue, report));
+  const SampleNames names{sample_lines};
+  for (const auto& issue : report.issues) lines.push_back(file + ": " + describe(issue, report, names));
   return lines;
 }
 
-void throw_if_invalid(const ValidationReport& report, const std::string& file) {
+void throw_if_invalid(const ValidationReport& report, const std::string& file,
+                      const std::vector<std::size_t>& sample_lines) {
   if (!report.has_errors()) return;
   std::string message;
-  for (const auto& line : describe_issues(report, file)) message += (message.empty() ? "" : "\n") + line;
+  for (const auto& line : describe_issues(report, file, sample_lines)) message += (message.empty() ? "" : "\n") + line;
   throw std::runtime_error(message);
 }
 

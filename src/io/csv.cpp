@@ -1,6 +1,7 @@
 #include "rollkin/io/csv.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/input_error.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -17,9 +18,11 @@ std::string format_double(double v) {
 }
 
 std::string csv_field(const std::string& field) {
-  if (field.find_first_of(",\"\r\n") == std::string::npos) return field;
+  // Control characters (a name may hold any) are escaped so that every row stays one line of plain text.
+  const std::string text = excerpt(field, std::string::npos);
+  if (text.find_first_of(",\"") == std::string::npos) return text;
   std::string out = "\"";
-  for (char c : field) {
+  for (char c : text) {
     if (c == '"') out += '"';
     out += c;
   }

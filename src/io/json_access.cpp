@@ -41,27 +41,6 @@ std::string fmt(double v) {
   return os.str();
 }
 
-std::string line_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, col = 1;
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return std::to_string(line) + ":" + std::to_string(col);
-}
-
-std::string parse_message(const std::string& what) {
-  const std::size_t col = what.find("column ");
-  std::size_t from = col == std::string::npos ? what.find("] ") : what.find(": ", col);
-  if (from == std::string::npos) return what;
-  return what.substr(from + 2);
-}
-
 void JsonAccess::fail(const std::string& path, const std::string& message) const { throw InputError(file_, path, message); }
 
 void JsonAccess::object(const json& j, const std::string& path, const std::vector<std::string>& allowed) const {

@@ -27,10 +27,6 @@ std::string index(const std::string& path, std::size_t i);
 std::string kind_of(const json& j);
 /// Shortest natural text of a number (as an ostream prints it).
 std::string fmt(double v);
-/// 1-based "line:column" of the byte index reported by nlohmann (index of the last character read).
-std::string line_column(const std::string& text, std::size_t byte);
-/// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
-std::string parse_message(const std::string& what);
 
 /// The accessors, bound to the file named in messages.
 class JsonAccess {

@@ -2,9 +2,12 @@
 
 #include <cerrno>
 #include <charconv>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace rollkin {
@@ -41,6 +44,25 @@ std::string trimmed(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
+/// A message if `text` looks like two numbers written with decimal commas ("1,5 2,25", "1,5;2,25"),
+/// which the separators would otherwise split into three or four columns; "" otherwise.
+std::string decimal_commas(const std::string& text) {
+  bool digit_comma_digit = false;
+  for (std::size_t i = 1; i + 1 < text.size(); ++i)
+    digit_comma_digit = digit_comma_digit || (text[i] == ',' && std::isdigit(static_cast<unsigned char>(text[i - 1])) &&
+                                              std::isdigit(static_cast<unsigned char>(text[i + 1])));
+  if (!digit_comma_digit) return "";
+  std::string pointed;
+  std::vector<std::string> fields;  // split on blanks and ';' only, ',' read as a decimal point
+  for (char c : text) pointed += c == ',' ? '.' : c == ';' ? ' ' : c;
+  std::istringstream in(pointed);
+  for (std::string f; in >> f;) fields.push_back(f);
+  double a = 0, b = 0;
+  if (fields.size() != 2 || !parse_number(fields[0], a) || !parse_number(fields[1], b)) return "";
+  return "\"" + excerpt(trimmed(text)) + "\" looks like two numbers written with decimal commas; write decimal " +
+         "points (\"" + fields[0] + " " + fields[1] + "\"): ',' separates the columns";
+}
+
 class PointParser {
  public:
   PointParser(const std::string& source, double scale) : source_(source), scale_(scale) {}
@@ -55,25 +77,30 @@ class PointParser {
     double x = 0, y = 0;
     const bool x_ok = parse_number(fields[0], x);
     if (first_content && !x_ok) return;  // the header line
-    const std::string shown = "\"" + trimmed(text) + "\"";
+    const std::string shown = "\"" + excerpt(trimmed(text)) + "\"";
     const std::string expected = "expected two numbers \"x y\", got ";
+    if (const std::string why = decimal_commas(text); !why.empty()) fail(number, why);
     if (!x_ok || (fields.size() > 1 && !parse_number(fields[1], y)))
-      fail(number, expected + shown + " (" + (x_ok ? fields[1] : fields[0]) + " is not a number)");
+      fail(number, expected + shown + " (" + excerpt(x_ok ? fields[1] : fields[0]) + " is not a number)");
     if (fields.size() == 1) fail(number, expected + "only one number in " + shown);
-    if (fields.size() > 2) fail(number, expected + "a third column in " + shown);
+    if (fields.size() > 2)
+      fail(number, expected + (fields.size() == 3 ? "a third column" : std::to_string(fields.size()) + " columns") +
+                       " in " + shown + "; a point file holds the two coordinates x y of a planar contour: keep " +
+                       "the x and y columns only (e.g. awk '{print $1, $2}')");
     if (!std::isfinite(x) || !std::isfinite(y)) fail(number, expected + shown + " (not a finite number)");
     points_.emplace_back(x * scale_, y * scale_);
+    lines_.push_back(number);
     last_line_ = number;
   }
 
-  std::vector<Vec2<double>> finish(std::size_t min_points) {
+  PointSamples finish(std::size_t min_points) {
     if (points_.empty())
       throw InputError(source_, "", "no points (the file is empty or holds only comments/header); expected lines \"x y\"");
     if (points_.size() < min_points)
       throw InputError(source_, std::to_string(last_line_),
                        "only " + std::to_string(points_.size()) + " point" + (points_.size() == 1 ? "" : "s") +
                            " in the file, at least " + std::to_string(min_points) + " needed");
-    return std::move(points_);
+    return PointSamples{std::move(points_), std::move(lines_)};
   }
 
  private:
@@ -86,33 +113,69 @@ class PointParser {
   bool seen_content_ = false;
   std::size_t last_line_ = 0;
   std::vector<Vec2<double>> points_;
+  std::vector<std::size_t> lines_;
 };
 
-std::vector<Vec2<double>> parse_stream(std::istream& in, const std::string& source, std::size_t min_points,
-                                       double scale) {
+/// Whole-file problems that would otherwise show as a confusing message about one line: UTF-16/32 text,
+/// NUL bytes, line ends that are a bare CR. Throws InputError saying which and what to do.
+void check_encoding(const std::string& text, const std::string& source) {
+  const auto starts = [&](const char* bom, std::size_t n) { return text.compare(0, n, bom, n) == 0; };
+  const std::string save_as = "; save it as plain text (ASCII or UTF-8), e.g. iconv -f UTF-16 -t UTF-8 FILE > NEW";
+  if (starts("\xFF\xFE", 2) || starts("\xFE\xFF", 2))
+    throw InputError(source, "", std::string("the file is UTF-16 text (byte order mark ") +
+                                     (text[0] == '\xFF' ? "FF FE" : "FE FF") + ")" + save_as);
+  const std::size_t nul = text.find('\0');
+  if (nul != std::string::npos) {
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + nul, '\n'));
+    throw InputError(source, std::to_string(line), "the file holds NUL bytes (it is UTF-16/UTF-32 text or a binary file)" + save_as);
+  }
+  for (std::size_t cr = text.find('\r'); cr != std::string::npos; cr = text.find('\r', cr + 1))
+    if (cr + 1 < text.size() && text[cr + 1] != '\n') {
+      const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + cr, '\n'));
+      throw InputError(source, std::to_string(line),
+                       std::string("line ends are a bare CR (classic Mac OS line ends)") +
+                           (line == 1 ? ", so the whole file reads as one line" : "") +
+                           "; expected LF or CR LF line ends: convert them, e.g. tr '\\r' '\\n' < FILE > NEW");
+    }
+}
+
+PointSamples parse_text(const std::string& text, const std::string& source, std::size_t min_points, double scale) {
   if (!std::isfinite(scale) || !(scale > 0))
     throw InputError(source, "", "scale factor must be a positive finite number, got " + std::to_string(scale));
+  check_encoding(text, source);
   PointParser parser(source, scale);
-  std::string text;
-  for (std::size_t number = 1; std::getline(in, text); ++number) {
-    if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
-    parser.line(text, number);
+  std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // UTF-8 byte order mark
+  for (std::size_t number = 1; start < text.size(); ++number) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    parser.line(text.substr(start, end - start), number);
+    start = end + 1;
   }
   return parser.finish(min_points);
 }
 
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", std::string("cannot open the point file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, "", std::string("cannot read the point file: ") + std::strerror(errno));
+  return text.str();
+}
+
 }  // namespace
 
+PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale) {
+  return parse_text(file_text(path), path, min_points, scale);
+}
+
 std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t min_points, double scale) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", std::string("cannot open the point file: ") + std::strerror(errno));
-  return parse_stream(in, path, min_points, scale);
+  return read_point_samples(path, min_points, scale).points;
 }
 
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source, std::size_t min_points,
                                            double scale) {
-  std::istringstream in(text);
-  return parse_stream(in, source, min_points, scale);
+  return parse_text(text, source, min_points, scale).points;
 }
 
 }  // namespace rollkin

@@ -8,6 +8,7 @@
 
 #include "rollkin/builder.hpp"
 #include "rollkin/geometry/contact.hpp"
+#include "rollkin/io/json_document.hpp"
 
 #include <array>
 #include <cerrno>
@@ -52,41 +53,7 @@ class SceneReader {
 
   // ---- the JSON document ----------------------------------------------------------------------------
   json parse(const std::string& text) {
-    // Duplicate keys are silently merged by JSON parsers; catch them with a callback tracking each object's
-    // keys (the path given is that of the enclosing keys, without array indices).
-    std::vector<std::set<std::string>> seen;
-    std::vector<std::string> keys;
-    std::string duplicate, where;
-    json::parser_callback_t cb = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
-      switch (event) {
-        case json::parse_event_t::object_start: seen.emplace_back(); break;
-        case json::parse_event_t::object_end:
-          if (!seen.empty()) seen.pop_back();
-          if (!keys.empty() && keys.size() > seen.size()) keys.pop_back();
-          break;
-        case json::parse_event_t::key: {
-          const std::string k = parsed.get<std::string>();
-          if (!seen.empty() && !seen.back().insert(k).second && duplicate.empty()) {
-            duplicate = k;
-            where = join(keys, ".");
-          }
-          if (keys.size() >= seen.size() && !keys.empty()) keys.back() = k;
-          else keys.push_back(k);
-          break;
-        }
-        default: break;
-      }
-      return true;
-    };
-    json j;
-    try {
-      j = json::parse(text, cb);
-    } catch (const json::parse_error& e) {
-      fail(line_column(text, e.byte), "malformed JSON: " + parse_message(e.what()) +
-                                          "; expected a JSON object as described in docs/scene_format.md");
-    }
-    if (!duplicate.empty())
-      fail(where, "duplicate key \"" + duplicate + "\" in one object; each key may appear only once");
+    json j = parse_json_document(text, file_);
     if (!j.is_object()) fail("", "the scene must be a JSON object, got " + kind_of(j));
     return j;
   }
@@ -232,6 +199,9 @@ class SceneReader {
       js_.array(*h, child(path, "hold"), "two flags [hold u, hold v]", 2);
       for (int j = 0; j < 2; ++j)
         in.hold[j] = js_.boolean((*h)[j], index(child(path, "hold"), j), "whether to hold the variable during assembly");
+      if ((in.hold[0] || in.hold[1]) && !in.has_values)
+        fail(child(path, "hold"), "\"hold\" needs \"values\": a held variable keeps its given value during "
+                                  "assembly; give \"values\": [u0, v0] or drop \"hold\"");
     }
     builder_.contact(name, kind == PairKind::Rolling, a, b, vars[0], vars[1]);
     inputs_.push_back(in);

@@ -1,6 +1,7 @@
 #include "rollkin/io/svg.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/input_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,18 +23,49 @@ const std::vector<std::string>& default_palette() {
 
 const std::string& palette_color(std::size_t i) { return default_palette()[i % default_palette().size()]; }
 
+namespace {
+
+/// Length of the valid UTF-8 character at text[i] that XML 1.0 allows (no U+FFFE, U+FFFF, surrogates),
+/// or 0 if the bytes there are not one.
+std::size_t xml_char_length(const std::string& text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+  const unsigned c = byte(i);
+  const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+  if (n == 0) return 0;
+  unsigned long cp = n == 1 ? c : n == 2 ? (c & 0x1f) : n == 3 ? (c & 0x0f) : (c & 0x07);
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+    cp = (cp << 6) | (byte(i + k) & 0x3f);
+  }
+  const unsigned long smallest[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (cp < smallest[n] || cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff) || cp == 0xfffe || cp == 0xffff) return 0;
+  return n;
+}
+
+}  // namespace
+
 std::string xml_escape(const std::string& text) {
   std::string out;
   out.reserve(text.size());
-  for (char c : text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const std::size_t n = xml_char_length(text, i);
+    // Control characters (not allowed in XML 1.0, even as references) and bytes that are not UTF-8 are
+    // shown as escapes (\n, \x01, \xff) so that the document stays well-formed XML.
+    if (n == 0 || static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out += escaped_byte(static_cast<unsigned char>(c));
+      ++i;
+      continue;
+    }
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&apos;"; break;
-      default: out += c;
+      default: out.append(text, i, n);
     }
+    i += n;
   }
   return out;
 }

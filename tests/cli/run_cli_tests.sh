@@ -91,11 +91,11 @@ check "osculating variant explains the singularity" $(grep -q "osculat" err.txt;
 
 # ---- bad inputs: exit 2, message names the file, no output file --------------------------------------
 for bad in malformed unknown_pair_type missing_contour_file contour_too_short cannot_assemble; do
-  rm -f bad.csv bad.csv.tmp
+  rm -f bad.csv bad.csv.tmp .bad.csv.*
   run solve "$BAD/$bad.json" --csv bad.csv
   check "$bad: exit 2" $([ "$rc" -eq 2 ]; echo $?)
   check "$bad: message names the file" $(grep -q "$bad.json" err.txt; echo $?)
-  check "$bad: no output file" $([ ! -e bad.csv ] && [ ! -e bad.csv.tmp ]; echo $?)
+  check "$bad: no output file" $([ ! -e bad.csv ] && [ ! -e bad.csv.tmp ] && ! ls .bad.csv.* >/dev/null 2>&1; echo $?)
 done
 run solve "$BAD/malformed.json"
 check "malformed JSON: line:column" $(grep -q "malformed.json:4:[0-9]*: malformed JSON" err.txt; echo $?)
@@ -153,6 +153,113 @@ check "double theta5 agrees with the 50-digit reference to 1e-12 deg" $(paste -d
 check "reference values have 50 digits" $(awk -F, 'NR == 2 { exit (length($6) < 45) }' ref.csv; echo $?)
 run reference "$EX/paper_fourbar.json" --digits 40 --csv x.csv
 check "reference --digits 40 is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -f x.csv ]; echo $?)
+
+# ---- deep JSON nesting: a located error at any depth, never a crash (issue 11, defect 2) -------------------
+for levels in 1000 100000 1000000; do
+  python3 -c "import sys; n = int(sys.argv[1]); print('{\"description\": ' + '[' * n + ']' * n + '}')" $levels > deep$levels.json
+  run solve deep$levels.json --csv deep.csv
+  check "$levels nested arrays: exit 2, located 'nested deeper than 256 levels'" \
+    $([ "$rc" -eq 2 ] && grep -q "deep$levels.json:1:[0-9]*: arrays and objects nested deeper than 256 levels at description\[0\]" err.txt && [ ! -e deep.csv ]; echo $?)
+done
+# Inside a contour of a valid scene (crashed with a segmentation fault before the bound).
+python3 -c "import sys; n = 10**6; sys.stdout.write(open(sys.argv[1]).read().replace('\"radius\": 4,', '\"radius\": 4, \"x\": ' + '[' * n + ']' * n + ',', 1))" \
+  "$EX/paper_fourbar.json" > deep_contour.json
+run solve deep_contour.json --csv deep.csv
+check "10^6 nested arrays in a contour: exit 2, located message, no crash" \
+  $([ "$rc" -eq 2 ] && grep -q "deep_contour.json:10:[0-9]*: .*nested deeper than 256 levels at links\[3\].contours\[0\].x\[0\]" err.txt && [ ! -e deep.csv ]; echo $?)
+python3 -c "print('{\"description\": ' + '{\"a\": ' * 1000000 + '1' + '}' * 1000000 + '}')" > deep_objects.json
+run solve deep_objects.json
+check "10^6 nested objects: exit 2, located message" $([ "$rc" -eq 2 ] && grep -q "deep_objects.json:1:[0-9]*: .*nested deeper than 256 levels at description.a.a" err.txt; echo $?)
+
+# ---- messages that help (defect 7) --------------------------------------------------------------------------
+sed 's/"radius": 4,/"radius": 1e400,/' "$EX/paper_fourbar.json" > huge.json
+run solve huge.json
+check "1e400: exit 2 with file, line:column and JSON path" \
+  $([ "$rc" -eq 2 ] && grep -q "huge.json:10:[0-9]*: number 1e400 at links\[3\].contours\[0\].radius is out of the range" err.txt; echo $?)
+sed 's/"radius": 4,/"radius": 4, "radius": 5,/' "$EX/paper_fourbar.json" > dupkey.json
+run solve dupkey.json
+check "duplicate key: full JSON path with array indices" \
+  $([ "$rc" -eq 2 ] && grep -q 'dupkey.json:10:[0-9]*: duplicate key "radius" at links\[3\].contours\[0\].radius' err.txt; echo $?)
+sed 's/"values": \[-3, 117\]/"hold": [true, false]/' "$EX/paper_fourbar.json" > hold.json
+run solve hold.json
+check "hold without values: exit 2, says hold needs values" \
+  $([ "$rc" -eq 2 ] && grep -q 'hold.json:pairs\[2\].hold: "hold" needs "values"' err.txt; echo $?)
+run solve "$BAD/cannot_assemble.json" --verbose
+check "--verbose on an assembly that cannot close: exit 2, no report left on stdout" $([ "$rc" -eq 2 ] && [ ! -s out.txt ]; echo $?)
+long=$(head -c 5000 /dev/zero | tr '\0' 'x')
+printf '0 0\n1 %s\n' "$long" > long_line.txt
+sed 's|{"name": "rim", "type": "circle", "radius": 1}|{"name": "rim", "type": "samples", "file": "long_line.txt", "closed": true}|' "$EX/paper_fourbar.json" > long_line.json
+run solve long_line.json
+check "a 5000-character bad value is cut in the message" $([ "$rc" -eq 2 ] && grep -q 'long_line.txt:2: .*xxx\.\.\.' err.txt && [ "$(wc -c < err.txt)" -lt 600 ]; echo $?)
+# Control characters and markup in names: the plot stays well-formed XML, the CSV one line per row.
+sed -e 's/link2/li\\u0001nk<\&>\\n2/g' -e 's/O_A/O\\u0007_A/g' "$EX/paper_fourbar.json" > ctrl.json
+run solve ctrl.json --from 0 --to 10 --step 5 --csv ctrl.csv --plot ctrl.svg --draw ctrl_draw.svg
+check "control characters in names: solves (exit 0)" $([ "$rc" -eq 0 ]; echo $?)
+check "control characters in names: plot and drawing parse as XML" \
+  $(python3 -c "import sys, xml.etree.ElementTree as E; [E.parse(f) for f in sys.argv[1:]]" ctrl.svg ctrl_draw.svg 2>/dev/null; echo $?)
+check "control characters in names: escaped in the CSV (3 rows + header, one line each)" \
+  $([ "$(wc -l < ctrl.csv)" -eq 4 ] && head -n 1 ctrl.csv | grep -q 'O\\x07_A.theta2,' && head -n 1 ctrl.csv | grep -q 'li\\x01nk<&>\\n2.x'; echo $?)
+
+# ---- out of memory: exit 3 and what it was doing (not "bad input") ----------------------------------------
+if (ulimit -v 400000; "$BIN" --version >/dev/null 2>&1); then  # not under AddressSanitizer (needs more)
+  (ulimit -v 400000; "$BIN" solve "$EX/paper_fourbar.json" --step 0.000016 --csv oom.csv >out.txt 2>err.txt); rc=$?
+  check "allocation failure: exit 3, 'out of memory while', nothing written" \
+    $([ "$rc" -eq 3 ] && grep -q "^rollkin: out of memory while " err.txt && [ ! -e oom.csv ]; echo $?)
+fi
+
+# ---- outputs never destroy inputs (defect 3) ---------------------------------------------------------------
+cp "$EX/paper_fourbar.json" out.csv.tmp
+cp out.csv.tmp tmp.orig
+run solve out.csv.tmp --from 0 --to 10 --step 5 --csv out.csv
+check "--csv out.csv leaves a scene named out.csv.tmp intact" $([ "$rc" -eq 0 ] && cmp -s out.csv.tmp tmp.orig && [ -s out.csv ]; echo $?)
+mkdir -p real
+echo "old" > real/data.csv
+ln -s real/data.csv link.csv
+run solve "$EX/paper_fourbar.json" --from 0 --to 10 --step 5 --csv link.csv
+check "a symlink output is written to its target and stays a link" \
+  $([ "$rc" -eq 0 ] && [ -L link.csv ] && head -n 1 real/data.csv | grep -q "^O_A.theta2," && [ "$(ls -A real)" = "data.csv" ]; echo $?)
+ln -s scene.json scene_link.csv
+run solve scene.json --csv scene_link.csv
+check "an output that is a link to the scene is refused (exit 2)" $([ "$rc" -eq 2 ] && grep -q "refusing" err.txt && cmp -s scene.json scene.orig; echo $?)
+ln scene.json scene_hard.svg
+run solve scene.json --plot scene_hard.svg
+check "an output that is a hard link to the scene is refused (exit 2)" $([ "$rc" -eq 2 ] && grep -q "refusing" err.txt && cmp -s scene.json scene.orig; echo $?)
+(umask 027; "$BIN" solve "$EX/paper_fourbar.json" --from 0 --to 10 --step 5 --csv mode.csv >/dev/null 2>&1)
+check "a new output gets the umask's mode (0640 under umask 027)" $([ "$(stat -c %a mode.csv)" = "640" ]; echo $?)
+chmod 604 mode.csv
+run solve "$EX/paper_fourbar.json" --from 0 --to 10 --step 5 --csv mode.csv
+check "a replaced output keeps its mode" $([ "$rc" -eq 0 ] && [ "$(stat -c %a mode.csv)" = "604" ]; echo $?)
+
+# ---- several outputs: all or nothing (defect 4) -----------------------------------------------------------
+mkdir -p aon && cd aon || exit 1
+printf 'old csv\n' > keep.csv
+printf 'old svg\n' > keep.svg
+cp keep.csv keep.csv.orig && cp keep.svg keep.svg.orig
+run solve "$EX/paper_fourbar.json" --csv keep.csv --draw keep.svg --plot no_such_dir/x.svg
+check "one output in a missing directory: exit 2, nothing written" \
+  $([ "$rc" -eq 2 ] && grep -q "no_such_dir" err.txt && cmp -s keep.csv keep.csv.orig && cmp -s keep.svg keep.svg.orig; echo $?)
+run solve "$EX/paper_fourbar.json" --csv new.csv --plot keep.csv.orig/x.svg
+check "one output under a file: exit 2, the other not created" $([ "$rc" -eq 2 ] && [ ! -e new.csv ]; echo $?)
+run solve "$EX/paper_fourbar.json" --csv same.csv --plot ./same.csv
+check "two outputs naming one file: exit 2" $([ "$rc" -eq 2 ] && grep -q "name the same file" err.txt && [ ! -e same.csv ]; echo $?)
+check "no temporaries left after the failed runs" \
+  $([ "$(ls -A | sort | tr '\n' ' ')" = "err.txt keep.csv keep.csv.orig keep.svg keep.svg.orig out.txt " ]; echo $?)
+cd .. || exit 1
+
+# ---- point files: closed contour with its first point repeated; messages that say what to do (defect 9, 7) ---
+{ cat shapes/disk.txt; head -n 1 shapes/disk.txt; } > shapes/disk_repeat.txt
+sed 's|shapes/disk.txt|shapes/disk_repeat.txt|' sampled.json > sampled_repeat.json
+run solve sampled_repeat.json --from -10 --to 10 --step 5 --csv repeat.csv
+check "closed point file with its first point repeated at the end solves like without it" \
+  $([ "$rc" -eq 0 ] && cmp -s <(cut -d, -f1-6 repeat.csv) <(cut -d, -f1-6 sampled.csv); echo $?)
+tr '\n' '\r' < shapes/disk.txt > shapes/disk_cr.txt
+sed 's|shapes/disk.txt|shapes/disk_cr.txt|' sampled.json > sampled_cr.json
+run solve sampled_cr.json
+check "point file with CR-only line ends: exit 2, says so" $([ "$rc" -eq 2 ] && grep -q "disk_cr.txt:1: line ends are a bare CR" err.txt; echo $?)
+python3 -c "import sys; sys.stdout.buffer.write(open('shapes/disk.txt').read().encode('utf-16'))" > shapes/disk_utf16.txt
+sed 's|shapes/disk.txt|shapes/disk_utf16.txt|' sampled.json > sampled_utf16.json
+run solve sampled_utf16.json
+check "UTF-16 point file: exit 2, says UTF-16" $([ "$rc" -eq 2 ] && grep -q "disk_utf16.txt: the file is UTF-16" err.txt; echo $?)
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -74,10 +74,14 @@ ValidationReport validate_polyline(const std::vector<Vec2<double>>& pts, bool cl
 
 /// One line per issue (errors and warnings), each prefixed with `file: `, e.g.
 /// `shapes/cam.txt: samples 41 and 42 coincide (distance 0 < 1e-09 of the contour size); remove one`.
-std::vector<std::string> describe_issues(const ValidationReport& report, const std::string& file);
+/// With `sample_lines` (the line of the file each sample was read from) samples are named by their line:
+/// `shapes/cam.txt: the points on lines 43 and 44 coincide ...`.
+std::vector<std::string> describe_issues(const ValidationReport& report, const std::string& file,
+                                         const std::vector<std::size_t>& sample_lines = {});
 
 /// Throws std::runtime_error whose message holds describe_issues() joined by newlines, if the report has
 /// at least one error. Warnings alone do not throw.
-void throw_if_invalid(const ValidationReport& report, const std::string& file);
+void throw_if_invalid(const ValidationReport& report, const std::string& file,
+                      const std::vector<std::size_t>& sample_lines = {});
 
 }  // namespace rollkin::geometry

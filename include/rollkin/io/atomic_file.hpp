@@ -1,19 +1,20 @@
 // Atomic file output shared by the CSV and SVG writers (and usable by any other writer).
 //
-// The content is written to "PATH.tmp" in the same directory, flushed and closed, then renamed over PATH
-// (rename(2) replaces atomically on POSIX). Readers therefore see either the old file or the complete new
-// one, never a half-written file. On any failure the temporary file is removed, PATH is left untouched and
-// std::runtime_error is thrown with a message that names PATH and the system's reason.
+// write_file_atomic is an OutputSet (rollkin/io/output_set.hpp) of one file: the content goes to a
+// temporary made by mkstemp(3) in the target's directory (a name that cannot collide with any file of the
+// user's), is closed, then renamed over PATH (rename(2) replaces atomically on POSIX). Readers see either
+// the old file or the complete new one. A PATH that is a symbolic link is written to its target and stays a
+// link. On any failure the temporary is removed, PATH is left untouched and rollkin::io::OutputError (a
+// std::runtime_error) is thrown with a message that names PATH and the reason.
 #pragma once
+
+#include "rollkin/io/output_set.hpp"
 
 #include <string>
 
 namespace rollkin::io {
 
-/// The temporary file name used while writing `path`: path + ".tmp".
-std::string temporary_path(const std::string& path);
-
-/// Writes `content` to `path` atomically (see above). Throws std::runtime_error naming `path` on failure.
+/// Writes `content` to `path` atomically (see above). Throws OutputError naming `path` on failure.
 void write_file_atomic(const std::string& path, const std::string& content);
 
 }  // namespace rollkin::io

@@ -18,8 +18,9 @@ namespace rollkin::io {
 /// "%.17g" of v (round-trips through strtod); "nan", "inf", "-inf" for non-finite values.
 std::string format_double(double v);
 
-/// The field as it must appear in a CSV line: unchanged, or double-quoted with inner quotes doubled when it
-/// contains ',', '"', '\r' or '\n'.
+/// The field as it must appear in a CSV line: control characters written as escapes ("\n", "\r",
+/// "\t", "\x1b") so that a row is one line, then double-quoted with inner quotes doubled when it
+/// contains ',' or '"'.
 std::string csv_field(const std::string& field);
 
 class CsvWriter {

@@ -5,7 +5,9 @@
 //   0.0  1.25      separators: spaces, tabs, ',' or ';' (any mix, "1.5,2" and "1.5; 2" too)
 //   1e-3, -2.5
 //
-// Every other line must hold exactly two finite numbers. Each point is multiplied by `scale` (the file's
+// Every other line must hold exactly two finite numbers (decimal points, not commas). Line ends LF or CR LF;
+// text in ASCII or UTF-8 (a UTF-8 byte order mark is skipped). Rejected with a message that says what to do:
+// UTF-16/UTF-32 text or NUL bytes, bare-CR line ends, decimal commas ("1,5 2,5"), a third column. Each point is multiplied by `scale` (the file's
 // unit in scene units, e.g. 0.001 for a file in mm read into a scene in m). Errors are InputError naming the
 // file, the 1-based line and what was expected.
 #pragma once
@@ -17,6 +19,15 @@
 #include <vector>
 
 namespace rollkin {
+
+/// Points and the 1-based line of the file each was read from (for messages about a point).
+struct PointSamples {
+  std::vector<Vec2<double>> points;
+  std::vector<std::size_t> lines;
+};
+
+/// Reads the file at `path` (see above) with the line of every point; throws InputError.
+PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale = 1.0);
 
 /// Reads the file at `path`; throws InputError if it cannot be opened, is malformed, or holds fewer than
 /// `min_points` points.

@@ -24,7 +24,9 @@ namespace rollkin::io {
 const std::vector<std::string>& default_palette();
 const std::string& palette_color(std::size_t i);
 
-/// XML text escaping of &, <, >, " and '.
+/// XML text escaping of &, <, >, " and '; control characters and bytes that are not UTF-8 (neither
+/// allowed in XML 1.0) are written as visible escapes "\n", "\x01", "\xff", so the document stays
+/// well-formed whatever a name holds.
 std::string xml_escape(const std::string& text);
 
 /// Tick values for an axis: `values` are multiples of `step` (1, 2, 2.5 or 5 times a power of ten) from `lo`

@@ -26,11 +26,14 @@ ContourShape read_samples_contour(const json& c, const std::string& path, const 
   if ((f != nullptr) == (p != nullptr))
     js.fail(path, "expected exactly one of \"file\" (a point file) or \"points\" (inline [[x, y], ...])");
   std::vector<Vec2<double>> pts;
+  std::vector<std::size_t> lines;  // of the point file, one per point: messages name them
   std::string source;
   if (f) {
     source = ctx.contour_file(*f, child(path, "file"));
     try {
-      pts = read_point_file(source, kMinSplineSamples, scale);
+      PointSamples read = read_point_samples(source, kMinSplineSamples, scale);
+      pts = std::move(read.points);
+      lines = std::move(read.lines);
     } catch (const InputError& e) {
       js.fail(child(path, "file"), e.what());
     }
@@ -45,7 +48,9 @@ ContourShape read_samples_contour(const json& c, const std::string& path, const 
   const double area = closed ? signed_area(pts) : 0.0;
   const geometry::MaterialSide as_drawn = area >= 0 ? geometry::MaterialSide::Left : geometry::MaterialSide::Right;
   try {
-    geometry::throw_if_invalid(geometry::validate_polyline(pts, closed, as_drawn, kValidationTolerance), source);
+    const auto report = geometry::validate_polyline(pts, closed, as_drawn, kValidationTolerance);
+    geometry::throw_if_invalid(report, source, lines);
+    if (report.dropped_closing_repeat) pts.pop_back();  // closed: the first point repeated at the end
   } catch (const std::runtime_error& e) {
     js.fail(path, std::string("invalid sampled contour: ") + e.what());
   }

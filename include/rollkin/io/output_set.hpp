@@ -1,0 +1,66 @@
+// A set of output files written all or nothing, never over an input.
+//
+//   io::OutputSet out(scene.files_read_with_scene);   // the files the run read: never written
+//   const auto csv = out.add("--csv", "run.csv");     // checks the path now, before any work is done
+//   const auto plot = out.add("--plot", "run.svg");
+//   ... solve ...
+//   out.set(csv, csv_text);  out.set(plot, svg_text);
+//   out.commit();                                     // every file replaced, or none
+//
+// add() refuses (OutputError) an empty path, a directory, a path whose directory is missing or not
+// writable, an existing file that is not a regular file, a file the run read (compared by realpath and by
+// device/inode, so hard links and symlinks are caught) and a file already in the set.
+// An output path that is a symbolic link is written to its target (as cp does); the link stays a link.
+// commit() creates one temporary per output with mkstemp(3) in the target's own directory (so no name can
+// collide with a user's file and rename(2) stays on one file system), writes and closes them all, and only
+// then renames them over their targets. A new file gets the mode a normally created file would get
+// (0666 & ~umask); a replaced file keeps its mode. On any failure before the renames, every temporary is
+// removed and no target is touched; a rename that fails after others succeeded puts the earlier targets
+// back (they were exchanged with renameat2(RENAME_EXCHANGE), so their old content is still at hand).
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rollkin::io {
+
+/// An output that cannot or must not be written. The message names the output and the reason.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class OutputSet {
+ public:
+  /// `inputs`: every file the run read (paths as opened); an output resolving to one is refused.
+  explicit OutputSet(std::vector<std::string> inputs = {});
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  /// Declares an output (`label` names it in messages, e.g. "--csv"); checks its path (see above).
+  /// Returns its index for set().
+  std::size_t add(const std::string& label, const std::string& path);
+
+  /// The content of output `index`, kept in memory until commit().
+  void set(std::size_t index, std::string content);
+
+  /// Writes every output (all must have been set) all or nothing. Throws OutputError.
+  void commit();
+
+  /// The file an output path is written to: the path itself, or the final target of a symbolic link.
+  static std::string resolve_target(const std::string& path);
+
+ private:
+  struct Output {
+    std::string label, path, target, content;
+    bool has_content = false;
+  };
+  std::vector<std::string> inputs_;
+  std::vector<Output> outputs_;
+  std::vector<std::string> temporaries_;  // created and not yet renamed (removed by the destructor)
+};
+
+}  // namespace rollkin::io

@@ -1,0 +1,182 @@
+#define BOOST_TEST_MODULE io_output_set
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.hpp"
+
+#include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/output_set.hpp"
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+using rollkin::io::OutputError;
+using rollkin::io::OutputSet;
+using rollkin::io::write_file_atomic;
+namespace fs = std::filesystem;
+
+namespace {
+
+using namespace rollkin::testing;
+
+/// A fresh, empty scratch directory for one test case.
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = scratch_dir("io_output_set") / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// The names in `dir` (temporaries left behind would show here).
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
+  return out;
+}
+
+mode_t mode_of(const fs::path& p) {
+  struct stat st {};
+  ::stat(p.c_str(), &st);
+  return st.st_mode & 07777;
+}
+
+/// The OutputError message of `f()`, or "" if it throws none.
+template <class F> std::string output_error_of(F&& f) {
+  try {
+    f();
+  } catch (const OutputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(temporary_names_cannot_collide_with_user_files) {
+  // Old code wrote through OUTPUT.tmp: a scene named out.csv.tmp was overwritten and removed.
+  const fs::path dir = fresh_dir("collide");
+  write_text(dir / "out.csv.tmp", "the user's scene");
+  write_file_atomic((dir / "out.csv").string(), "a,b\n");
+  BOOST_TEST(read_text(dir / "out.csv.tmp") == "the user's scene");
+  BOOST_TEST(read_text(dir / "out.csv") == "a,b\n");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"out.csv", "out.csv.tmp"}));
+}
+
+BOOST_AUTO_TEST_CASE(new_files_get_the_umask_mode_and_replaced_files_keep_theirs) {
+  const fs::path dir = fresh_dir("mode");
+  const mode_t old_mask = ::umask(022);
+  write_file_atomic((dir / "new.csv").string(), "x");
+  BOOST_TEST(mode_of(dir / "new.csv") == 0644u);
+  ::umask(027);
+  write_file_atomic((dir / "new2.csv").string(), "x");
+  BOOST_TEST(mode_of(dir / "new2.csv") == 0640u);
+  write_text(dir / "kept.csv", "old");
+  fs::permissions(dir / "kept.csv", fs::perms(0604));
+  write_file_atomic((dir / "kept.csv").string(), "new");
+  BOOST_TEST(mode_of(dir / "kept.csv") == 0604u);
+  BOOST_TEST(read_text(dir / "kept.csv") == "new");
+  ::umask(old_mask);
+}
+
+BOOST_AUTO_TEST_CASE(a_symlink_output_writes_its_target_and_stays_a_link) {
+  const fs::path dir = fresh_dir("symlink");
+  fs::create_directories(dir / "real");
+  write_text(dir / "real" / "data.csv", "old");
+  fs::create_symlink("real/data.csv", dir / "link.csv");
+  fs::create_symlink("link.csv", dir / "link2.csv");  // a chain of two links
+  write_file_atomic((dir / "link2.csv").string(), "new");
+  BOOST_TEST(fs::is_symlink(dir / "link.csv"));
+  BOOST_TEST(fs::is_symlink(dir / "link2.csv"));
+  BOOST_TEST(read_text(dir / "real" / "data.csv") == "new");
+  BOOST_TEST(names_in(dir / "real") == (std::set<std::string>{"data.csv"}));
+  // A dangling link is written as cp would: its target is created.
+  fs::create_symlink("real/fresh.csv", dir / "dangling.csv");
+  write_file_atomic((dir / "dangling.csv").string(), "fresh");
+  BOOST_TEST(fs::is_symlink(dir / "dangling.csv"));
+  BOOST_TEST(read_text(dir / "real" / "fresh.csv") == "fresh");
+  BOOST_TEST(OutputSet::resolve_target((dir / "link2.csv").string()) == (dir / "real/data.csv").string());
+}
+
+BOOST_AUTO_TEST_CASE(outputs_resolving_to_an_input_are_refused) {
+  const fs::path dir = fresh_dir("inputs");
+  const std::string scene = write_text(dir / "scene.json", "{}");
+  fs::create_directories(dir / "sub");
+  fs::create_symlink("../scene.json", dir / "sub" / "to_scene.csv");
+  fs::create_hard_link(dir / "scene.json", dir / "hard.csv");
+  OutputSet set({scene});
+  for (const fs::path& p : {dir / "scene.json", dir / "sub" / ".." / "scene.json", dir / "sub" / "to_scene.csv", dir / "hard.csv"}) {
+    const std::string msg = output_error_of([&] { set.add("--csv", p.string()); });
+    BOOST_TEST_CONTEXT(p) {
+      BOOST_TEST(contains(msg, "refusing to write --csv '" + p.string() + "'"));
+      BOOST_TEST(contains(msg, "inputs are never overwritten"));
+    }
+  }
+  BOOST_TEST(read_text(scene) == "{}");
+}
+
+BOOST_AUTO_TEST_CASE(bad_output_paths_are_refused_when_added) {
+  const fs::path dir = fresh_dir("paths");
+  OutputSet set;
+  set.add("--csv", (dir / "a.csv").string());
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", (dir / "." / "a.csv").string()); }), "name the same file"));
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", (dir / "no_such_dir" / "x.svg").string()); }), "no_such_dir"));
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", dir.string()); }), "is a directory"));
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", ""); }), "empty file name"));
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", "/dev/null"); }), "not a regular file"));
+  write_text(dir / "file", "x");
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", (dir / "file" / "x.svg").string()); }), "not a directory"));
+  fs::create_symlink("loop2", dir / "loop1");
+  fs::create_symlink("loop1", dir / "loop2");
+  BOOST_TEST(contains(output_error_of([&] { set.add("--plot", (dir / "loop1").string()); }), "symbolic links"));
+}
+
+BOOST_AUTO_TEST_CASE(several_outputs_are_written_all_or_nothing) {
+  const fs::path dir = fresh_dir("all_or_nothing");
+  write_text(dir / "a.csv", "old a");
+  fs::create_directories(dir / "gone");
+  {
+    OutputSet set;
+    const auto a = set.add("--csv", (dir / "a.csv").string());
+    const auto b = set.add("--plot", (dir / "gone" / "b.svg").string());
+    set.set(a, "new a");
+    set.set(b, "new b");
+    fs::remove(dir / "gone");  // the directory disappears after the check: creating b's temporary fails
+    BOOST_TEST(contains(output_error_of([&] { set.commit(); }), "b.svg"));
+  }
+  BOOST_TEST(read_text(dir / "a.csv") == "old a");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv"}));
+
+  // The rename of the second output fails (its target became a non-empty directory after the check): the
+  // first, already replaced, is put back.
+  write_text(dir / "b.svg", "old b");
+  {
+    OutputSet set;
+    const auto a = set.add("--csv", (dir / "a.csv").string());
+    const auto b = set.add("--plot", (dir / "b.svg").string());
+    set.set(a, "new a");
+    set.set(b, "new b");
+    fs::remove(dir / "b.svg");
+    fs::create_directories(dir / "b.svg" / "inside");
+    const std::string msg = output_error_of([&] { set.commit(); });
+    BOOST_TEST(contains(msg, "b.svg"));
+    BOOST_TEST(contains(msg, "restored"));
+  }
+  BOOST_TEST(read_text(dir / "a.csv") == "old a");
+  BOOST_TEST(fs::is_directory(dir / "b.svg" / "inside"));
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.svg"}));
+
+  // And when everything is fine, every output is replaced or created.
+  fs::remove_all(dir / "b.svg");
+  {
+    OutputSet set;
+    set.set(set.add("--csv", (dir / "a.csv").string()), "new a");
+    set.set(set.add("--plot", (dir / "b.svg").string()), "new b");
+    set.commit();
+  }
+  BOOST_TEST(read_text(dir / "a.csv") == "new a");
+  BOOST_TEST(read_text(dir / "b.svg") == "new b");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.svg"}));
+}
