@@ -192,13 +192,13 @@ check "anti-parallelogram with step 0.7: every row ok and crossed (theta4 + 90 -
   $([ "$rc" -eq 0 ] && awk -F, 'NR > 1 { if ($NF != "ok") bad = 1; d = $4 - $1 - 90; while (d > 180) d -= 360; while (d <= -180) d += 360
     if (d < 0) d = -d; s = $1 - 90; if (s < 0) s = -s; u = $1 - 270; if (u < 0) u = -u; if (d < 1 && s > 1 && u > 1) bad = 1 } END { exit bad }' anti7.csv; echo $?)
 
-# Cam gears stepped exactly through the singular vertex pose phi1 = 180: phi2 (column 4) against
+# Cam gears stepped exactly through the singular vertex pose phi1 = 180: phi2 (column 2) against
 # tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2), e = 0.5; the 180 row within 1e-9 deg or "singular".
 run solve "$EX/elliptical_gears_cam.json" --from 30 --to 330 --step 5 --csv cam.csv
 check "cam gears through 180 deg follow the closed form (no inaccurate ok)" $(awk -F, '
   NR > 1 { pi = 3.141592653589793; t = $1 * pi / 180
     ex = ($1 == 180) ? -180 : -2 * atan2((1 - 0.5) / (1 + 0.5) * sin(t / 2), cos(t / 2)) * 180 / pi
-    e = $4 - ex; while (e > 180) e -= 360; while (e <= -180) e += 360; if (e < 0) e = -e
+    e = $2 - ex; while (e > 180) e -= 360; while (e <= -180) e += 360; if (e < 0) e = -e
     if ($NF == "singular") { if ($1 != 180 || e > 1e-6) bad = 1 } else if ($NF != "ok" || e > 1e-9) bad = 1 }
   END { exit bad }' cam.csv; echo $?)
 

@@ -91,6 +91,21 @@ template <class S> struct OpenDomains {
   }
 };
 
+/// Cubic Hermite through (q0, v0) at driver value t0 and (q1, v1) at t1, evaluated at t (s = (t - t0)/(t1 - t0);
+/// s > 1 extrapolates); with `rate`, also its derivative d/dt there.
+template <class S> void hermite(const VectorX<S>& q0, const VectorX<S>& v0, const S& t0, const VectorX<S>& q1,
+                                const VectorX<S>& v1, const S& t1, const S& t, VectorX<S>& out, VectorX<S>* rate = nullptr) {
+  const S dt = t1 - t0;
+  const S s = (t - t0) / dt, s2 = s * s, s3 = s2 * s;
+  const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
+  const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
+  out = h00 * q0 + (h10 * dt) * v0 + h01 * q1 + (h11 * dt) * v1;
+  if (!rate) return;
+  const S d00 = S(6) * s2 - S(6) * s, d10 = S(3) * s2 - S(4) * s + S(1);
+  const S d01 = S(-6) * s2 + S(6) * s, d11 = S(3) * s2 - S(2) * s;
+  *rate = (d00 / dt) * q0 + d10 * v0 + (d01 / dt) * q1 + d11 * v1;
+}
+
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
 /// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
@@ -98,7 +113,7 @@ template <class S> class Tracer {
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
         v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), open_(m), span_q_(q0),
-        span_v_(q0), pose_q_(q0), pose_v_(q0) {
+        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0) {
     rate_(driver) = S(1);
     for (Eigen::Index i = 0; i < weight_.size(); ++i) weight_(i) = S(1) / m.variable_scale(static_cast<int>(i));
     const S scale = m.variable_scale(var_);
@@ -131,32 +146,47 @@ template <class S> class Tracer {
       // Go to the target when it is within the step or would leave a sliver behind.
       const bool lands = abs(target - q_(var_)) <= abs(h) * (S(1) + S(1) / S(64));
       const S t = lands ? target : S(q_(var_) + h);
-      bool accepted = try_step(t, rep);
+      const bool accepted = try_step(t, rep);
       iterations += rep.iterations;
       evaluations += rep.evaluations;
-      const bool singular = singular_trial(rep);
+      bool singular = singular_trial(rep);
       const bool near = abs(t - q_(var_)) <= cross_step_;
-      if (accepted && !singular) {
-        const int sign = sd_.determinant_sign();
-        if (sign * sign_ < 0 && !near) {  // a singular point lies in between: approach it, cross it short
-          h /= S(2);
+      int sign = accepted && !singular ? sd_.determinant_sign() : 0;
+      if (sign * sign_ < 0 && !near) {  // a singular point lies in between: approach it, cross it short
+        h /= S(2);
+        continue;
+      }
+      // A singular pose at t (or no solution exactly at a target that lies on one): step over it.
+      if ((singular || (lands && !accepted)) && near) {
+        if (accepted) {
+          held_.swap(trial_);
+          held_report_ = rep;
+        }
+        if (step_over(t, rep, iterations, evaluations)) {
+          if (has_span_ && between(span_q_(var_), q_(var_), target)) {
+            SolveReport<S> inside = pose_in_span(target);
+            inside.iterations += iterations;
+            inside.evaluations += evaluations;
+            return inside;
+          }
+          h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
           continue;
         }
+        if (accepted) {
+          // No regular pose beyond (e.g. a dead point just ahead, where the condition grows without the
+          // branches meeting): the converged pose is the best there is and is taken as before, its sign unused.
+          trial_.swap(held_);
+          rep = held_report_;
+          evaluate_and_factor(m_, trial_, sd_, m_.equation_count());
+          ++evaluations;
+          singular = false;
+        }
+      }
+      if (accepted && !singular) {
         const int out = open_.violation(trial_);
         if (out >= 0) return locate_domain_exit(t, out);
         accept();
         if (sign != 0) sign_ = sign;
-        h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
-        continue;
-      }
-      // A singular pose at t (or no solution exactly at a target that lies on one): step over it.
-      if ((singular || (lands && !accepted)) && near && step_over(t, rep, iterations, evaluations)) {
-        if (has_span_ && between(span_q_(var_), q_(var_), target)) {
-          SolveReport<S> inside = pose_in_span(target);
-          inside.iterations += iterations;
-          inside.evaluations += evaluations;
-          return inside;
-        }
         h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
         continue;
       }
@@ -190,8 +220,11 @@ template <class S> class Tracer {
   }
 
   /// From the current (regular) pose, steps over the singular input t to a regular pose beyond it, at least
-  /// as far beyond as the current pose is before it (and at least cross_step). On success the current pose
-  /// becomes that one and the span [previous pose, new pose] is kept for interpolation.
+  /// as far beyond as the current pose is before it (and at least cross_step). The far pose must be on the
+  /// same branch: the cubic Hermite through both regular poses must satisfy the constraints at t (to
+  /// eps^(1/2), against the O(h^4) interpolation error), which a pose on another branch or past a dead point
+  /// does not. On success the current pose becomes the far one and the span [previous pose, far pose] is
+  /// kept for interpolation.
   bool step_over(const S& t, SolveReport<S>& rep, int& iterations, int& evaluations) {
     using std::abs;
     using std::max;
@@ -202,10 +235,22 @@ template <class S> class Tracer {
     iterations += rep.iterations;
     evaluations += rep.evaluations;
     if (!accepted || singular_trial(rep) || open_.violation(trial_) >= 0) return false;
+    const int sign = sd_.determinant_sign();
+    solve_velocity(m_, sd_, rate_, held_v_);  // sd is factored at the far pose
+    // Checked at t and at the middle of the span (t may lie next to an end, where any cubic fits).
+    for (const S& at : {t, S((q_(var_) + t_far) / S(2))}) {
+      hermite(q_, v_, q_(var_), trial_, held_v_, t_far, at, pose_q_);
+      for (int d : m_.drivers) pose_q_(d) = q_(d);
+      pose_q_(var_) = at;
+      evaluate_and_factor(m_, pose_q_, sd_, m_.equation_count());
+      ++evaluations;
+      if (!(weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight) <= tolerance<S>(S(1) / S(2)))) return false;
+    }
+    evaluate_and_factor(m_, trial_, sd_, m_.equation_count());  // accept() takes the velocity there
+    ++evaluations;
     span_q_ = q_;
     span_v_ = v_;
     has_span_ = true;
-    const int sign = sd_.determinant_sign();
     accept();
     if (sign != 0) sign_ = sign;
     return true;
@@ -218,15 +263,8 @@ template <class S> class Tracer {
   /// ends (q and qdot), then Newton from there; kept if Newton converges to a regular pose close to the
   /// interpolant (round-off accurate on the followed branch), otherwise the interpolant with status Singular.
   SolveReport<S> pose_in_span(const S& t) {
-    const S t0 = span_q_(var_), dt = q_(var_) - t0;
-    const S s = (t - t0) / dt, s2 = s * s, s3 = s2 * s;
-    const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
-    const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
-    pose_q_ = h00 * span_q_ + (h10 * dt) * span_v_ + h01 * q_ + (h11 * dt) * v_;
-    // d/dt of the interpolant: the Hermite basis derivatives over dt.
-    const S d00 = S(6) * s2 - S(6) * s, d10 = S(3) * s2 - S(4) * s + S(1), d01 = S(-6) * s2 + S(6) * s,
-            d11 = S(3) * s2 - S(2) * s;
-    pose_v_ = (d00 / dt) * span_q_ + d10 * span_v_ + (d01 / dt) * q_ + d11 * v_;
+    const S t0 = span_q_(var_);
+    hermite(span_q_, span_v_, t0, q_, v_, q_(var_), t, pose_q_, &pose_v_);
     for (std::size_t k = 0; k < m_.drivers.size(); ++k) {
       pose_q_(m_.drivers[k]) = q_(m_.drivers[k]);
       pose_v_(m_.drivers[k]) = rate_(static_cast<Eigen::Index>(k));
@@ -269,12 +307,7 @@ template <class S> class Tracer {
           trial_ = tangent_;
           break;
         }
-        {
-          const S s = (t - q_prev_(var_)) / dt, s2 = s * s, s3 = s2 * s;
-          const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
-          const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
-          trial_ = h00 * q_prev_ + (h10 * dt) * v_prev_ + h01 * q_ + (h11 * dt) * v_;
-        }
+        hermite(q_prev_, v_prev_, q_prev_(var_), q_, v_, q_(var_), t, trial_);
         break;
       }
     }
@@ -364,6 +397,9 @@ template <class S> class Tracer {
   // The pose returned for a target inside the span.
   VectorX<S> pose_q_, pose_v_;
   bool inside_span_ = false;
+  // A converged but singular trial kept while stepping over it.
+  VectorX<S> held_, held_v_;
+  SolveReport<S> held_report_;
 };
 
 }  // namespace detail
