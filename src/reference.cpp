@@ -61,7 +61,7 @@ ReferenceSweep reference_sweep_mp(const Mechanism<S>& m, const VectorX<S>& guess
     p.status = pose.report.status;
     p.iterations = pose.report.iterations;
     p.input = decimal(S(pose.input * display_scale(m, var)), digits);
-    if (pose.report.ok()) {
+    if (pose.report.has_pose()) {
       p.residual = decimal(pose.report.residual, 3);
       for (Eigen::Index i = 0; i < pose.q.size(); ++i) {
         p.q_raw.push_back(decimal(pose.q(i), digits));
@@ -146,7 +146,7 @@ std::string reference_csv_text(const ReferenceSweep& ref, const Mechanism<double
   os << ",residual,status\n";
   for (const auto& p : ref.poses) {
     os << p.input;
-    const bool ok = p.status == SolveStatus::Converged;
+    const bool ok = p.status == SolveStatus::Converged || p.status == SolveStatus::Singular;
     for (int i = 0; i < mech.variable_count(); ++i)
       if (i != input) os << ',' << (ok ? p.q[i] : std::string("nan"));
     os << ',' << (ok ? p.residual : std::string("nan")) << ',' << to_string(p.status) << '\n';

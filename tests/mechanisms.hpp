@@ -108,6 +108,40 @@ template <class S> Fixture<S> disk_on_line(const S& r) {
   return f;
 }
 
+/// Crossed four-bar (anti-parallelogram, examples/antiparallelogram.json): frame 4 (pivots O2 = (0, 0),
+/// O4 = (4, 0)), coupler 4, cranks 2; the crank's pin at 90 deg in its frame ((0, 2)), the follower's at 0 deg
+/// ((2, 0)). Variables: theta2 (input), theta3 (coupler on crank), theta_b (follower on coupler), theta4.
+/// Assembled at theta2 = 0 on the crossed branch (pin B at (2.4, -1.2), theta4 = -143.13 deg); at theta2 = 90
+/// and 270 deg the joints are in line and the parallelogram branch (theta4 = theta2 + 90) crosses it.
+template <class S> Fixture<S> antiparallelogram() {
+  MechanismBuilder<S> b;
+  const int frame = b.link("frame", true), crank = b.link("crank"), coupler = b.link("coupler"),
+            follower = b.link("follower");
+  const int o2 = b.revolute("O2", frame, crank, SE2<S>(), SE2<S>(), "theta2");
+  b.revolute("A", crank, coupler, SE2<S>(S(0), Vec2<S>(S(0), S(2))), SE2<S>(), "theta3");
+  b.revolute("B", coupler, follower, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(S(0), Vec2<S>(S(2), S(0))), "theta_b");
+  b.revolute("O4", frame, follower, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(), "theta4");
+  b.driver(o2);
+  Fixture<S> f{b.build(), VectorX<S>(4), {}};
+  const S deg = pi<S>() / S(180);
+  f.guess << S(0), S(-53) * deg, S(-90) * deg, S(-143) * deg;
+  return f;
+}
+
+/// Zero unknowns: an open chain whose every pair is driven (a crank on a driven revolute, a slider on a
+/// driven prismatic carried by it). Variables: theta (input), s (input). No loop, no equation.
+template <class S> Fixture<S> driven_open_chain(const S& scale = S(1)) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true), crank = b.link("crank"), slider = b.link("slider");
+  const int r = b.revolute("O", ground, crank, SE2<S>(), SE2<S>(), "theta");
+  const int p = b.prismatic("P", crank, slider, SE2<S>(S(0), Vec2<S>(S(2) * scale, S(0))), SE2<S>(), "s");
+  b.driver(r);
+  b.driver(p);
+  Fixture<S> f{b.build(), VectorX<S>(2), {}};
+  f.guess << S(0), S(0);
+  return f;
+}
+
 /// Assembles a fixture; returns the report (q holds the assembled pose, sd is ready for sweep()).
 template <class S> SolveReport<S> assemble_fixture(const Fixture<S>& f, VectorX<S>& q, SolveData<S>& sd) {
   q = f.guess;

@@ -1,12 +1,12 @@
 // build/rollkin: the command-line tool.
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
-//                       [--rates] [--verbose] [--interference]
+//                       [--rates] [--verbose] [--interference] [--max-steps N]
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE
 //   rollkin --help | --version
 //
-// Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed): one line
-// per limit on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
+// Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
+// pose): one line per limit or singular pose on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
 // an output that would overwrite an input, an output that cannot be written): the message on stderr and no
 // output file written; 3 out of memory ("out of memory while ..."), no output file written. Outputs are all
 // or nothing (rollkin/io/output_set.hpp).
@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -54,11 +55,12 @@ struct Options {
   std::optional<double> from, to, step;
   std::string csv, plot, draw;
   bool rates = false, verbose = false, interference = false;
+  double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
 };
 
 const char* kUsage =
     "usage: rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]\n"
-    "                           [--rates] [--verbose] [--interference]\n"
+    "                           [--rates] [--verbose] [--interference] [--max-steps N]\n"
     "       rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE\n"
     "       rollkin --help | --version\n"
     "\n"
@@ -75,14 +77,22 @@ const char* kUsage =
     "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
     "  --interference   check every solved pose for contours that penetrate or touch at a second point\n"
     "                   (findings on stderr; they make the exit status 1)\n"
+    "  --max-steps N    refuse (exit 2) a request estimated to need more than N continuation sub-steps\n"
+    "                   (default 1e7; the estimate is the input's travel over the largest sub-step, 5 deg\n"
+    "                   for angles, plus the number of values)\n"
+    "\n"
+    "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
+    "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
+    "domain_exit, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
     "\n"
     "Without output options a one-line summary is printed.\n"
     "\n"
     "'reference' runs the same assembly and sweep in MPFR (30, 50 or 100 decimal digits, default 50) and\n"
     "writes the poses as decimal strings (columns as the solve CSV without link poses): reference data for\n"
     "regression tests and for measuring the double solver's error.\n"
-    "Exit status: 0 all requested poses solved; 1 some not (limits on stderr, solved rows still written);\n"
-    "2 bad input or command line (nothing written); 3 out of memory (nothing written).\n";
+    "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
+    "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
+    "3 out of memory (nothing written).\n";
 
 double parse_value(const std::string& opt, const std::string& text) {
   char* end = nullptr;
@@ -117,6 +127,10 @@ Options parse_args(const std::vector<std::string>& args) {
     else if (a == "--draw") set_path(o.draw);
     else if (a == "--rates") o.rates = true;
     else if (a == "--interference" && o.command == "solve") o.interference = true;
+    else if (a == "--max-steps") {
+      o.max_steps = parse_value(a, value());
+      if (!(o.max_steps >= 1)) throw UsageError("--max-steps expects a positive number of sub-steps");
+    }
     else if (a == "--digits" && o.command == "reference") {
       const double d = parse_value(a, value());
       if (d != 30 && d != 50 && d != 100) throw UsageError("--digits must be 30, 50 or 100");
@@ -152,6 +166,18 @@ io::Sweep requested_sweep(const io::Scene& scene, const Options& o) {
   const std::string bad = io::check_sweep(s);
   if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
   return s;
+}
+
+/// Bounded work: refuses before solving a request whose estimated continuation sub-steps exceed --max-steps.
+void check_work(const io::Scene& scene, const io::Sweep& sw, const std::vector<double>& inputs, const Options& o) {
+  const double estimate = estimate_substeps(scene.mechanism, scene.guess, sw.driver, inputs);
+  if (estimate <= o.max_steps) return;
+  std::ostringstream os;
+  os << "the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
+     << std::scientific << std::setprecision(2) << estimate << " continuation sub-steps, above the limit "
+     << o.max_steps << " (--max-steps); ask for a smaller range (--from/--to), a larger --step (fewer values),"
+     << " or raise the limit with --max-steps";
+  throw UsageError(os.str());
 }
 
 /// The output files of the command line, each checked against the files the run read and against each
@@ -215,6 +241,11 @@ void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, cons
             << "  rank of the full Jacobian " << ar.rank << ": redundant constraints " << ar.redundant
             << ", mobility (DOF = variables - rank) " << ar.mobility << "\n";
   if (!rep.detail.empty()) std::cout << "  " << rep.detail << "\n";
+  if (m.unknowns.empty())
+    std::cout << "  nothing to solve: every pair variable is an input, so each pose follows from the inputs alone"
+                 " (forward kinematics)\n";
+  else if (ar.mobility == 0)
+    std::cout << "  the mechanism has zero degrees of freedom: it is a rigid structure, its inputs cannot move\n";
 }
 
 /// Contact pairs whose signed curvatures cancel at q (osculation): their contact Jacobian is singular
@@ -294,9 +325,14 @@ int run(const Options& o) {
   const io::Scene scene = io::load_scene(o.scene);
   g_doing = "checking the output files";
   Outputs out(scene, o);
-  if (o.command == "reference") return run_reference(scene, requested_sweep(scene, o), o, out);
+  if (o.command == "reference") {
+    const io::Sweep sw = requested_sweep(scene, o);
+    check_work(scene, sw, io::sweep_inputs(sw), o);
+    return run_reference(scene, sw, o, out);
+  }
   const io::Sweep sw = requested_sweep(scene, o);
   const std::vector<double> inputs = io::sweep_inputs(sw);
+  check_work(scene, sw, inputs, o);
   const Mechanism<double>& m = scene.mechanism;
 
   g_doing = "assembling the mechanism";
@@ -339,6 +375,14 @@ int run(const Options& o) {
                        " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
                        " unknowns, condition " + fmt(assembly.condition, 3) + ")");
   for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+  std::size_t singular = 0;
+  for (const auto& p : result.poses)
+    if (p.report.status == SolveStatus::Singular) {
+      ++singular;
+      problems.push_back("singular: singular pose at " + input_text(scene, sw, p.input) +
+                         ": the branches meet / Jacobian singular; values follow the branch (interpolated between"
+                         " the regular poses on both sides, condition " + fmt(p.report.condition, 3) + ")");
+    }
   const std::vector<std::string> clashes = o.interference ? interference_lines(scene, sw, result) : std::vector<std::string>{};
   problems.insert(problems.end(), clashes.begin(), clashes.end());
   if (!assembly.ok())
@@ -359,6 +403,7 @@ int run(const Options& o) {
       summary << (i ? "," : "") << " " << to_string(result.limits[i].status) << " at "
               << fmt(result.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
   }
+  if (singular) summary << ", " << singular << " singular pose(s)";
   std::cout << summary.str() << "\n";
   for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
   return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;

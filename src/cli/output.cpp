@@ -69,7 +69,7 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
   for (std::size_t r = 0; r < ctx.result.poses.size(); ++r) {
     const auto& pose = ctx.result.poses[r];
     std::vector<double> row{radians_file_angle ? io::from_radians(ctx.inputs[r], kOutputAngle) : ctx.inputs[r]};
-    const bool ok = pose.report.ok();
+    const bool ok = pose.report.has_pose();  // values also for singular poses
     for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
     if (rates)
       for (int i : m.unknowns) row.push_back(ok ? pose.qdot(i) * out_scale(m, i) / in_scale : kNaN);
@@ -107,7 +107,7 @@ std::string plot_svg(const OutputContext& ctx) {
   for (int i = 0; i < m.variable_count(); ++i) {
     if (i == input) continue;
     std::vector<double> y;
-    for (const auto& p : ctx.result.poses) y.push_back(p.report.ok() ? p.q(i) * out_scale(m, i) : kNaN);
+    for (const auto& p : ctx.result.poses) y.push_back(p.report.has_pose() ? p.q(i) * out_scale(m, i) : kNaN);
     const bool is_angle = m.variables[i].kind == ParamKind::Angle;
     const std::size_t k = is_angle ? n_angles++ : n_lengths++;
     io::ChartSeries s;
@@ -137,7 +137,7 @@ std::string draw_svg(const OutputContext& ctx) {
   const auto& poses = ctx.result.poses;
   std::vector<std::size_t> solved;
   for (std::size_t i = 0; i < poses.size(); ++i)
-    if (poses[i].report.ok()) solved.push_back(i);
+    if (poses[i].report.has_pose()) solved.push_back(i);
   // Up to five poses, spread over the solved ones in input order.
   std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return poses[a].input < poses[b].input; });
   std::vector<std::size_t> pick;

@@ -260,6 +260,64 @@ python3 -c "import sys; sys.stdout.buffer.write(open('shapes/disk.txt').read().e
 sed 's|shapes/disk.txt|shapes/disk_utf16.txt|' sampled.json > sampled_utf16.json
 run solve sampled_utf16.json
 check "UTF-16 point file: exit 2, says UTF-16" $([ "$rc" -eq 2 ] && grep -q "disk_utf16.txt: the file is UTF-16" err.txt; echo $?)
+# ---- singular poses, nothing to solve, bounded work (issue 11: defects 1, 5, 6, 8) -------------------
+# Zero unknowns: one crank on a driven revolute. Forward kinematics only: every row ok, residual 0, and the
+# crank's world angle is the input.
+cat > crank.json <<'JSON'
+{"units": {"length": "m", "angle": "deg"},
+ "links": [{"name": "ground", "ground": true}, {"name": "crank"}],
+ "pairs": [{"name": "O", "type": "revolute", "links": ["ground", "crank"], "variable": "theta", "value": 0}],
+ "inputs": ["O.theta"], "sweep": {"from": 0, "to": 90, "step": 30}}
+JSON
+run solve crank.json --csv crank.csv --verbose
+check "a scene with nothing to solve writes its rows (exit 0)" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' crank.csv)" -eq 4 ] &&
+  awk -F, 'NR > 1 { if ($NF != "ok" || $(NF - 1) != 0 || ($(NF - 2) - $1) > 1e-12 || ($1 - $(NF - 2)) > 1e-12) bad = 1 } END { exit bad }' crank.csv; echo $?)
+check "--verbose says in words that there is nothing to solve" $(grep -q "nothing to solve: every pair variable is an input" out.txt; echo $?)
+
+# Anti-parallelogram (frame 4, coupler 4, cranks 2): theta4 (column 4) must stay on the crossed branch, the
+# intersection of the circles about the crank pin (radius 4) and O4 (radius 2) that is not the parallelogram's
+# theta4 = theta2 + 90. Rows on the change points (90, 270) are within 1e-9 deg or "singular" with a stderr line.
+run solve "$EX/antiparallelogram.json" --csv anti.csv
+check "anti-parallelogram stays on the crossed branch over 0..360" $(awk -F, '
+  function wrap(a) { while (a > 180) a -= 360; while (a <= -180) a += 360; return a }
+  NR > 1 { pi = 3.141592653589793; t = $1 * pi / 180; ax = 2 * cos(t + pi / 2); ay = 2 * sin(t + pi / 2)
+    dx = 4 - ax; dy = -ay; d = sqrt(dx * dx + dy * dy); al = (16 - 4 + d * d) / (2 * d); h2 = 16 - al * al
+    ac = h2 > 0 ? sqrt(h2) : 0; px = ax + al * dx / d; py = ay + al * dy / d
+    b1 = atan2(py + ac * dx / d, px - ac * dy / d - 4) * 180 / pi; b2 = atan2(py - ac * dx / d, px + ac * dy / d - 4) * 180 / pi
+    par = $1 + 90; crossed = (wrap(b1 - par) ^ 2 < wrap(b2 - par) ^ 2) ? b2 : b1
+    e = wrap($4 - crossed); if (e < 0) e = -e
+    if ($NF == "singular") { if ($1 != 90 && $1 != 270) bad = 1; if (e > 1e-6) bad = 1; sing++ }
+    else if ($NF != "ok" || e > 1e-9) bad = 1 }
+  END { exit bad }' anti.csv; echo $?)
+nsing=$(awk -F, 'NR > 1 && $NF == "singular"' anti.csv | wc -l)
+check "singular rows: one stderr line each naming the input, exit 1 (else exit 0)" \
+  $(if [ "$nsing" -gt 0 ]; then [ "$rc" -eq 1 ] && [ "$(grep -c 'singular pose at O2.theta2 = ' err.txt)" -eq "$nsing" ] &&
+    grep -q "the branches meet / Jacobian singular; values follow the branch" err.txt; else [ "$rc" -eq 0 ]; fi; echo $?)
+run solve "$EX/antiparallelogram.json" --from 0 --to 360 --step 0.7 --csv anti7.csv
+check "anti-parallelogram with step 0.7: every row ok and crossed (theta4 + 90 - theta2 never 0 mod 360 away from 90/270)" \
+  $([ "$rc" -eq 0 ] && awk -F, 'NR > 1 { if ($NF != "ok") bad = 1; d = $4 - $1 - 90; while (d > 180) d -= 360; while (d <= -180) d += 360
+    if (d < 0) d = -d; s = $1 - 90; if (s < 0) s = -s; u = $1 - 270; if (u < 0) u = -u; if (d < 1 && s > 1 && u > 1) bad = 1 } END { exit bad }' anti7.csv; echo $?)
+
+# Cam gears stepped exactly through the singular vertex pose phi1 = 180: phi2 (column 2) against
+# tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2), e = 0.5; the 180 row within 1e-9 deg or "singular".
+run solve "$EX/elliptical_gears_cam.json" --from 30 --to 330 --step 5 --csv cam.csv
+check "cam gears through 180 deg follow the closed form (no inaccurate ok)" $(awk -F, '
+  NR > 1 { pi = 3.141592653589793; t = $1 * pi / 180
+    ex = ($1 == 180) ? -180 : -2 * atan2((1 - 0.5) / (1 + 0.5) * sin(t / 2), cos(t / 2)) * 180 / pi
+    e = $2 - ex; while (e > 180) e -= 360; while (e <= -180) e += 360; if (e < 0) e = -e
+    if ($NF == "singular") { if ($1 != 180 || e > 1e-6) bad = 1 } else if ($NF != "ok" || e > 1e-9) bad = 1 }
+  END { exit bad }' cam.csv; echo $?)
+
+# Bounded work: a request estimated above the limit is refused before solving, with the estimate and the way out.
+run solve "$EX/elliptical_gears.json" --to 1e12 --step 1e6 --csv huge.csv
+check "--to 1e12 --step 1e6 on gears is refused (exit 2, estimate and way out named, nothing written)" \
+  $([ "$rc" -eq 2 ] && [ ! -e huge.csv ] && grep -q "continuation sub-steps" err.txt && grep -q -- "--max-steps" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --max-steps 100 --csv lim.csv
+check "--max-steps 100 refuses the paper sweep (181 sub-steps estimated)" $([ "$rc" -eq 2 ] && [ ! -e lim.csv ] && grep -q "1.81e+02" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --max-steps 200 --csv lim.csv
+check "--max-steps 200 lets it run" $([ "$rc" -eq 0 ] && [ -s lim.csv ]; echo $?)
+run solve "$EX/paper_fourbar.json" --max-steps 0
+check "--max-steps 0 is a usage error" $([ "$rc" -eq 2 ]; echo $?)
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -8,6 +8,17 @@
 // there: a dead point if the unknowns' Jacobian has become ill-conditioned (the limit then lies within
 // about 2 min_step of the last pose), otherwise no convergence. After every accepted step, contact
 // parameters on open contours are checked against their domains; an exit is located by bisection.
+//
+// Singular points on the way (branches meet: bifurcations, singular cam poses). The sign of det J_u (square
+// systems, from the LU's pivots and row parity) is kept along the branch. A converged step that changes it
+// has passed a singular point: while the step is long it is halved toward that point, and the point is crossed
+// only with a step of at most cross_step (a 64th of max_step), whose prediction error (O(h^4) for Hermite) is
+// far below the O(h) separation of the branches, so Newton stays on the followed branch. A converged pose
+// that is itself singular (condition x residual above eps^(2/3): its values are not accurate) is never the
+// base of a prediction: the tracer steps over it from the last regular pose to a regular pose beyond, and a
+// requested input in between gets the cubic Hermite interpolant of the two regular poses (q and qdot),
+// polished by Newton when that is regular there, otherwise reported with status Singular.
+// max_step, min_step are relative to the driver's variable scale (Mechanism::variable_scale).
 #pragma once
 
 #include "rollkin/solve/position.hpp"
@@ -24,9 +35,12 @@ enum class Predictor {
   Hermite    // cubic through the last two poses and their velocities (third order), tangent at the start
 };
 
+/// Steps are in units of the driver's variable scale (Mechanism::variable_scale: radians for angles, the
+/// mechanism's length scale for lengths), so a scene scaled by any factor takes the same sub-steps.
 template <class S> struct ContinuationSettings {
   S max_step = pi<S>() / S(36);      // largest sub-step of the driver (5 degrees for angles)
   S min_step = S(1) / S(1000000000); // 1e-9: limits are located to about 2e-9 in the driver
+  S cross_fraction = S(1) / S(64);   // singular points are crossed with sub-steps of at most this x max_step
   S max_correction_ratio = S(1) / S(2);
   S ill_conditioned = S(100);        // condition growth (vs the sweep's start) that marks a dead point
   Predictor predictor = Predictor::Hermite;
@@ -42,6 +56,7 @@ template <class S> struct SweepResult {
   SolveReport<S> assembly;
   std::vector<SweepPose<S>> poses;          // one per requested input, in the requested order
   std::vector<SolveReport<S>> limits;       // limits met (at most one per direction)
+  /// Every requested pose plainly solved (no limit, no singular pose).
   bool all_solved() const {
     for (const auto& p : poses)
       if (!p.report.ok()) return false;
@@ -76,46 +91,107 @@ template <class S> struct OpenDomains {
   }
 };
 
+/// Cubic Hermite through (q0, v0) at driver value t0 and (q1, v1) at t1, evaluated at t (s = (t - t0)/(t1 - t0);
+/// s > 1 extrapolates); with `rate`, also its derivative d/dt there.
+template <class S> void hermite(const VectorX<S>& q0, const VectorX<S>& v0, const S& t0, const VectorX<S>& q1,
+                                const VectorX<S>& v1, const S& t1, const S& t, VectorX<S>& out, VectorX<S>* rate = nullptr) {
+  const S dt = t1 - t0;
+  const S s = (t - t0) / dt, s2 = s * s, s3 = s2 * s;
+  const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
+  const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
+  out = h00 * q0 + (h10 * dt) * v0 + h01 * q1 + (h11 * dt) * v1;
+  if (!rate) return;
+  const S d00 = S(6) * s2 - S(6) * s, d10 = S(3) * s2 - S(4) * s + S(1);
+  const S d01 = S(-6) * s2 + S(6) * s, d11 = S(3) * s2 - S(2) * s;
+  *rate = (d00 / dt) * q0 + d10 * v0 + (d01 / dt) * q1 + d11 * v1;
+}
+
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
 /// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
  public:
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
-        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), open_(m) {
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), open_(m), span_q_(q0),
+        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0) {
     rate_(driver) = S(1);
     for (Eigen::Index i = 0; i < weight_.size(); ++i) weight_(i) = S(1) / m.variable_scale(static_cast<int>(i));
+    const S scale = m.variable_scale(var_);
+    max_step_ = cfg.max_step * scale;
+    min_step_ = cfg.min_step * scale;
+    cross_step_ = max_step_ * cfg.cross_fraction;
     start_ = solve_position(m_, q_, sd_);
+    sign_ = sd_.determinant_sign();
     solve_velocity(m_, sd_, rate_, v_);
     base_condition_ = start_.condition;
   }
 
   const SolveReport<S>& start() const { return start_; }
-  const VectorX<S>& q() const { return q_; }
-  const VectorX<S>& v() const { return v_; }
+  /// The pose at the last target advance() reached, and its velocity.
+  const VectorX<S>& q() const { return inside_span_ ? pose_q_ : q_; }
+  const VectorX<S>& v() const { return inside_span_ ? pose_v_ : v_; }
 
   /// Advances to the driver value `target`. Returns Converged (iterations and evaluations summed over the
-  /// sub-steps), or the limit met, with the state left at the last pose reached.
+  /// sub-steps), Singular (values interpolated on the branch, see the file comment), or the limit met, with
+  /// the state left at the last pose reached.
   SolveReport<S> advance(const S& target) {
     using std::abs;
+    inside_span_ = false;
+    if (has_span_ && between(span_q_(var_), q_(var_), target)) return pose_in_span(target);
+    has_span_ = false;
     S h = clamp_step(target - q_(var_));
     SolveReport<S> rep = start_;
     int iterations = 0, evaluations = 0;
     while (q_(var_) != target) {
       // Go to the target when it is within the step or would leave a sliver behind.
-      const S t = abs(target - q_(var_)) <= abs(h) * (S(1) + S(1) / S(64)) ? target : S(q_(var_) + h);
+      const bool lands = abs(target - q_(var_)) <= abs(h) * (S(1) + S(1) / S(64));
+      const S t = lands ? target : S(q_(var_) + h);
       const bool accepted = try_step(t, rep);
       iterations += rep.iterations;
       evaluations += rep.evaluations;
-      if (accepted) {
+      bool singular = singular_trial(rep);
+      const bool near = abs(t - q_(var_)) <= cross_step_;
+      int sign = accepted && !singular ? sd_.determinant_sign() : 0;
+      if (sign * sign_ < 0 && !near) {  // a singular point lies in between: approach it, cross it short
+        h /= S(2);
+        continue;
+      }
+      // A singular pose at t (or no solution exactly at a target that lies on one): step over it.
+      if ((singular || (lands && !accepted)) && near) {
+        if (accepted) {
+          held_.swap(trial_);
+          held_report_ = rep;
+        }
+        if (step_over(t, rep, iterations, evaluations)) {
+          if (has_span_ && between(span_q_(var_), q_(var_), target)) {
+            SolveReport<S> inside = pose_in_span(target);
+            inside.iterations += iterations;
+            inside.evaluations += evaluations;
+            return inside;
+          }
+          h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
+          continue;
+        }
+        if (accepted) {
+          // No regular pose beyond (e.g. a dead point just ahead, where the condition grows without the
+          // branches meeting): the converged pose is the best there is and is taken as before, its sign unused.
+          trial_.swap(held_);
+          rep = held_report_;
+          evaluate_and_factor(m_, trial_, sd_, m_.equation_count());
+          ++evaluations;
+          singular = false;
+        }
+      }
+      if (accepted && !singular) {
         const int out = open_.violation(trial_);
         if (out >= 0) return locate_domain_exit(t, out);
         accept();
+        if (sign != 0) sign_ = sign;
         h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
         continue;
       }
       h /= S(2);
-      if (abs(h) < cfg_.min_step) return classify_stop(rep);
+      if (abs(h) < min_step_) return classify_stop(rep);
     }
     rep.iterations = iterations;
     rep.evaluations = evaluations;
@@ -131,9 +207,91 @@ template <class S> class Tracer {
     tangent_(var_) = t;
     predict(t, h);
     rep = solve_position(m_, trial_, sd_);
-    if (!rep.ok()) return false;
+    if (!rep.ok() && !(rep.status == SolveStatus::Underdetermined && start_.ok())) return false;
     return scaled_distance(trial_, tangent_) <= cfg_.max_correction_ratio * scaled_distance(tangent_, q_) +
                                                     sd_.settings.step_tolerance;
+  }
+
+  /// A converged trial whose values are not accurate: the Jacobian of the unknowns is rank deficient, or its
+  /// condition times the residual (a bound on the error of the unknowns) exceeds eps^(2/3).
+  bool singular_trial(const SolveReport<S>& rep) const {
+    if (rep.status == SolveStatus::Underdetermined) return start_.ok();
+    return rep.ok() && rep.condition * rep.residual > tolerance<S>(S(2) / S(3));
+  }
+
+  /// From the current (regular) pose, steps over the singular input t to a regular pose beyond it, at least
+  /// as far beyond as the current pose is before it (and at least cross_step). The far pose must be on the
+  /// same branch: the cubic Hermite through both regular poses must satisfy the constraints at t (to
+  /// eps^(1/2), against the O(h^4) interpolation error), which a pose on another branch or past a dead point
+  /// does not. On success the current pose becomes the far one and the span [previous pose, far pose] is
+  /// kept for interpolation.
+  bool step_over(const S& t, SolveReport<S>& rep, int& iterations, int& evaluations) {
+    using std::abs;
+    using std::max;
+    const S before = t - q_(var_);
+    const S beyond = max(abs(before), cross_step_);
+    const S t_far = t + (before < S(0) ? S(-beyond) : beyond);
+    const bool accepted = try_step(t_far, rep);
+    iterations += rep.iterations;
+    evaluations += rep.evaluations;
+    if (!accepted || singular_trial(rep) || open_.violation(trial_) >= 0) return false;
+    const int sign = sd_.determinant_sign();
+    solve_velocity(m_, sd_, rate_, held_v_);  // sd is factored at the far pose
+    // Checked at t and at the middle of the span (t may lie next to an end, where any cubic fits).
+    for (const S& at : {t, S((q_(var_) + t_far) / S(2))}) {
+      hermite(q_, v_, q_(var_), trial_, held_v_, t_far, at, pose_q_);
+      for (int d : m_.drivers) pose_q_(d) = q_(d);
+      pose_q_(var_) = at;
+      evaluate_and_factor(m_, pose_q_, sd_, m_.equation_count());
+      ++evaluations;
+      if (!(weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight) <= tolerance<S>(S(1) / S(2)))) return false;
+    }
+    evaluate_and_factor(m_, trial_, sd_, m_.equation_count());  // accept() takes the velocity there
+    ++evaluations;
+    span_q_ = q_;
+    span_v_ = v_;
+    has_span_ = true;
+    accept();
+    if (sign != 0) sign_ = sign;
+    return true;
+  }
+
+  /// a < x < b or b < x < a.
+  static bool between(const S& a, const S& b, const S& x) { return (a < x && x < b) || (b < x && x < a); }
+
+  /// The pose at driver value t inside the span stepped over: cubic Hermite between the regular poses at its
+  /// ends (q and qdot), then Newton from there; kept if Newton converges to a regular pose close to the
+  /// interpolant (round-off accurate on the followed branch), otherwise the interpolant with status Singular.
+  SolveReport<S> pose_in_span(const S& t) {
+    const S t0 = span_q_(var_);
+    hermite(span_q_, span_v_, t0, q_, v_, q_(var_), t, pose_q_, &pose_v_);
+    for (std::size_t k = 0; k < m_.drivers.size(); ++k) {
+      pose_q_(m_.drivers[k]) = q_(m_.drivers[k]);
+      pose_v_(m_.drivers[k]) = rate_(static_cast<Eigen::Index>(k));
+    }
+    pose_q_(var_) = t;
+    inside_span_ = true;
+    trial_ = pose_q_;
+    SolveReport<S> rep = solve_position(m_, trial_, sd_);
+    using std::min;
+    const S room = min(scaled_distance(pose_q_, span_q_), scaled_distance(pose_q_, q_)) / S(8);
+    if (rep.ok() && !singular_trial(rep) && scaled_distance(trial_, pose_q_) <= room) {
+      pose_q_.swap(trial_);
+      solve_velocity(m_, sd_, rate_, pose_v_);
+      return rep;
+    }
+    evaluate_and_factor(m_, pose_q_, sd_, m_.equation_count());  // the residual of the values returned
+    rep.residual = weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight);
+    rep.condition = sd_.condition;
+    rep.rank = sd_.rank;
+    rep.status = SolveStatus::Singular;
+    rep.limit_input = t;
+    std::ostringstream os;
+    os << "singular pose at " << m_.variables[var_].name << " = " << to_double(t)
+       << ": the branches meet (Jacobian of the unknowns singular); the values follow the branch, interpolated"
+       << " between the regular poses at " << to_double(t0) << " and " << to_double(q_(var_));
+    rep.detail = os.str();
+    return rep;
   }
 
   void predict(const S& t, const S& h) {
@@ -149,12 +307,7 @@ template <class S> class Tracer {
           trial_ = tangent_;
           break;
         }
-        {
-          const S s = (t - q_prev_(var_)) / dt, s2 = s * s, s3 = s2 * s;
-          const S h00 = S(2) * s3 - S(3) * s2 + S(1), h10 = s3 - S(2) * s2 + s;
-          const S h01 = S(-2) * s3 + S(3) * s2, h11 = s3 - s2;
-          trial_ = h00 * q_prev_ + (h10 * dt) * v_prev_ + h01 * q_ + (h11 * dt) * v_;
-        }
+        hermite(q_prev_, v_prev_, q_prev_(var_), q_, v_, q_(var_), t, trial_);
         break;
       }
     }
@@ -173,7 +326,7 @@ template <class S> class Tracer {
   S clamp_step(const S& remaining, const S& preferred = std::numeric_limits<S>::infinity()) const {
     using std::abs;
     using std::min;
-    const S len = min(min(abs(remaining), cfg_.max_step), preferred);
+    const S len = min(min(abs(remaining), max_step_), preferred);
     return remaining < S(0) ? S(-len) : len;
   }
 
@@ -206,7 +359,7 @@ template <class S> class Tracer {
   SolveReport<S> locate_domain_exit(S t, int out) {
     using std::abs;
     SolveReport<S> rep;
-    while (abs(t - q_(var_)) > cfg_.min_step) {
+    while (abs(t - q_(var_)) > min_step_) {
       const S mid = (q_(var_) + t) / S(2);
       if (try_step(mid, rep) && open_.violation(trial_) < 0) accept();
       else t = mid;
@@ -236,9 +389,35 @@ template <class S> class Tracer {
   bool has_prev_ = false;
   SolveReport<S> start_;
   S base_condition_;
+  S max_step_, min_step_, cross_step_;  // in the driver's own unit (ContinuationSettings times its scale)
+  int sign_ = 0;                        // sign of det J_u along the followed branch (0: unknown)
+  // The span last stepped over (singular input inside): its regular start pose; the end is the current pose.
+  VectorX<S> span_q_, span_v_;
+  bool has_span_ = false;
+  // The pose returned for a target inside the span.
+  VectorX<S> pose_q_, pose_v_;
+  bool inside_span_ = false;
+  // A converged but singular trial kept while stepping over it.
+  VectorX<S> held_, held_v_;
+  SolveReport<S> held_report_;
 };
 
 }  // namespace detail
+
+/// Bounded work: a lower bound on the continuation sub-steps sweep() takes for `inputs` from the assembly
+/// pose q0, checked before solving. The driver travels from q0 to both ends of the requested range in
+/// sub-steps of at most max_step (in its variable scale), and every requested value ends a sub-step.
+template <class S> S estimate_substeps(const Mechanism<S>& m, const VectorX<S>& q0, int driver, const std::vector<S>& inputs,
+                                       const ContinuationSettings<S>& cfg = {}) {
+  using std::max;
+  const int var = m.drivers[driver];
+  S up(0), down(0);
+  for (const S& x : inputs) {
+    up = max(up, S(x - q0(var)));
+    down = max(down, S(q0(var) - x));
+  }
+  return (up + down) / (cfg.max_step * m.variable_scale(var)) + S(static_cast<long long>(inputs.size()));
+}
 
 /// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
 /// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
@@ -269,7 +448,7 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
     for (std::size_t k = 0; k < side->size(); ++k) {
       SweepPose<S>& pose = out.poses[(*side)[k]];
       const SolveReport<S> rep = tracer.advance(pose.input);
-      if (!rep.ok()) {  // this input and all beyond it on this side are past the limit
+      if (!rep.has_pose()) {  // this input and all beyond it on this side are past the limit
         out.limits.push_back(rep);
         for (std::size_t rest = k; rest < side->size(); ++rest) {
           out.poses[(*side)[rest]].report = rep;

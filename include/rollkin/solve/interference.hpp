@@ -226,7 +226,7 @@ template <class S> SweepInterference check_interference(const Mechanism<S>& m, c
   for (std::size_t i = 0; i < sweep.poses.size(); ++i) {
     const SweepPose<S>& p = sweep.poses[i];
     out.poses[i].input = to_double(p.input);
-    if (!p.report.ok()) continue;
+    if (!p.report.has_pose()) continue;
     out.poses[i].checked = true;
     out.poses[i].findings = check_pose_interference(m, p.q, opt, out.contour_pairs, local, out.touch_tolerance, d);
   }

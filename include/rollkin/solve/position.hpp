@@ -88,6 +88,12 @@ template <class S> struct SolveData {
   void factor(int rows) {
     using std::abs;
     const auto n = ju.cols();
+    if (n == 0) {  // nothing to solve (every pair variable is an input): forward kinematics only
+      lu_active = false;
+      rank = 0;
+      condition = S(1);
+      return;
+    }
     if (rows == n && n > 0) {
       const bool nonzero_pivots = lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); });
       const S& largest = lu.largest_pivot();
@@ -111,8 +117,12 @@ template <class S> struct SolveData {
   /// x = J^-1 b (LU) or the minimum-norm least-squares solution (COD), in the scaled variables.
   template <class B> void solve(const B& b, VectorX<S>& x) const {
     if (lu_active) lu.solve(b, x);
+    else if (ju.cols() == 0) x.resize(0);
     else x.noalias() = cod.solve(b);
   }
+  /// Sign of det of the scaled Jacobian of the unknowns when the LU is active (square, regular), else 0
+  /// (unknown). The column and row scales are positive, so it is the sign of det J_u itself.
+  int determinant_sign() const { return lu_active ? lu.determinant_sign() : 0; }
 };
 
 /// Max-norm of a vector whose entries are multiplied by weight (the inverse of their scales).
@@ -165,7 +175,7 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     residual_last = rep.residual;
     sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseProduct(sd.row_weight.head(rows));
     sd.solve(sd.rhs.head(rows), sd.step);
-    last_step = sd.step.cwiseAbs().maxCoeff();
+    last_step = sd.step.size() == 0 ? S(0) : S(sd.step.cwiseAbs().maxCoeff());
     if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
     for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += sd.step(c) * sd.col_scale(c);
   }

@@ -9,6 +9,8 @@ namespace rollkin {
 
 enum class SolveStatus {
   Converged,        // pose found
+  Singular,         // pose found (values follow the branch), but the Jacobian of the unknowns is singular there:
+                    // branches meet; the values come from the regular poses on both sides (continuation.hpp)
   DeadPoint,        // motion limit: the Jacobian of the unknowns turns singular, the input cannot go on
   DomainExit,       // a contact parameter leaves its open contour's domain
   NoConvergence,    // Newton did not converge (not identified as a limit)
@@ -20,6 +22,7 @@ enum class SolveStatus {
 inline const char* to_string(SolveStatus s) {
   switch (s) {
     case SolveStatus::Converged: return "ok";
+    case SolveStatus::Singular: return "singular";
     case SolveStatus::DeadPoint: return "dead_point";
     case SolveStatus::DomainExit: return "domain_exit";
     case SolveStatus::NoConvergence: return "no_convergence";
@@ -47,7 +50,10 @@ template <class S> struct SolveReport {
   int contour = -1;
   std::string detail;       // one human-readable sentence
 
+  /// Plainly solved: a regular pose.
   bool ok() const { return status == SolveStatus::Converged; }
+  /// The pose's values are available (solved, or singular with values that follow the branch).
+  bool has_pose() const { return status == SolveStatus::Converged || status == SolveStatus::Singular; }
   int redundant() const { return equations - rank; }
 };
 

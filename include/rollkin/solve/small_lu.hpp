@@ -63,6 +63,14 @@ template <class S> class SmallLU {
   /// max_i |u_ii| and min_i |u_ii| of the last successful compute().
   const S& largest_pivot() const { return largest_pivot_; }
   const S& smallest_pivot() const { return smallest_pivot_; }
+  /// Sign of det A of the last successful compute(): det A = (-1)^(row swaps) prod u_kk. A sign change
+  /// between two poses of a continuation means a singular Jacobian in between (continuation.hpp).
+  int determinant_sign() const {
+    int sign = odd_swaps_ ? -1 : 1;
+    for (Eigen::Index k = 0; k < n_; ++k)
+      if (lu_[static_cast<std::size_t>(row_[static_cast<std::size_t>(k)] * n_ + k)] < S(0)) sign = -sign;
+    return sign;
+  }
   Eigen::Index size() const { return n_; }
 
  private:
@@ -78,6 +86,7 @@ template <class S> class SmallLU {
     const Eigen::Index n = dim<N>();
     S* lu = lu_.data();
     Eigen::Index* row = row_.data();
+    odd_swaps_ = false;
     ROLLKIN_UNROLL
     for (Eigen::Index i = 0; i < n; ++i) {
       row[i] = i;
@@ -100,6 +109,7 @@ template <class S> class SmallLU {
       largest_pivot_ = k == 0 ? best : max(largest_pivot_, best);
       smallest_pivot_ = k == 0 ? best : min(smallest_pivot_, best);
       if (best == S(0)) return false;
+      odd_swaps_ ^= p != k;
       std::swap(row[p], row[k]);
       const S* pivot_row = lu + row[k] * n;
       const S inv = S(1) / pivot_row[k];
@@ -143,6 +153,7 @@ template <class S> class SmallLU {
   std::vector<S> lu_;                 // row-major n x n: L below the diagonal (unit diagonal implied), U on and above
   std::vector<Eigen::Index> row_;     // row_[k]: the stored row that is the k-th row of P A
   S largest_pivot_ = S(0), smallest_pivot_ = S(0);
+  bool odd_swaps_ = false;            // parity of the row permutation P
 };
 
 }  // namespace rollkin
