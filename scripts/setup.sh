@@ -6,6 +6,8 @@
 # Run from anywhere:  bash scripts/setup.sh
 # Environment: ROLLKIN_BUILD_DIR (default build), ROLLKIN_JOBS (default 2), ROLLKIN_BUILD_TYPE (default
 # Release), ROLLKIN_SKIP_APT=1 to never call apt-get (e.g. on a non-Debian system with the libraries present).
+# ROLLKIN_SANITIZE=1 configures the AddressSanitizer/UBSan build (CMake option ROLLKIN_SANITIZE; .ci/run uses it
+# with ROLLKIN_BUILD_DIR=build-asan).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -60,7 +62,9 @@ fi
 
 # ---- 2. configure --------------------------------------------------------------------------------------
 log "configuring $build_type build in $root/$build_dir"
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
+sanitize=OFF
+if [[ "${ROLLKIN_SANITIZE:-0}" == 1 ]]; then sanitize=ON; fi
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize"
 
 # ---- 3. build ------------------------------------------------------------------------------------------
 log "building with $jobs jobs"

@@ -318,6 +318,23 @@ run solve "$EX/paper_fourbar.json" --max-steps 200 --csv lim.csv
 check "--max-steps 200 lets it run" $([ "$rc" -eq 0 ] && [ -s lim.csv ]; echo $?)
 run solve "$EX/paper_fourbar.json" --max-steps 0
 check "--max-steps 0 is a usage error" $([ "$rc" -eq 2 ]; echo $?)
+# ---- truncated scenes: exit 2, outputs untouched ------------------------------------------------------
+# 20 truncations of the examples at pseudo-random lengths (fixed seed), each before the closing brace, so
+# never valid JSON. Each run asks for a CSV over an existing file and a new plot: exit 2, the existing file
+# byte-identical, no plot and no temporary file left (the directory holds exactly what it held before).
+mkdir -p truncated
+printf 'input,value\n1,2\n' > truncated/keep.csv
+cp truncated/keep.csv keep.orig
+for ex in paper_fourbar elliptical_gears_cam hypocycloid cycloid; do
+  last_brace=$(grep -bo '}' "$EX/$ex.json" | tail -n 1 | cut -d: -f1)
+  for length in $(awk -v n="$last_brace" -v seed="${#ex}" 'BEGIN { srand(seed); print 0; for (i = 0; i < 4; ++i) print int(rand() * (n + 1)) }'); do
+    head -c "$length" "$EX/$ex.json" > truncated/scene.json
+    before=$(ls -A truncated)
+    run solve truncated/scene.json --csv truncated/keep.csv --plot truncated/new.svg
+    check "$ex.json truncated to $length bytes: exit 2, located message, outputs untouched" \
+      $([ "$rc" -eq 2 ] && grep -q "scene.json" err.txt && cmp -s truncated/keep.csv keep.orig && [ "$(ls -A truncated)" = "$before" ]; echo $?)
+  done
+done
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
