@@ -54,7 +54,7 @@ inline double param_near(const Shape& shape, const Vec2d& target) {
 /// Point of an angle on a circle of radius r about the origin.
 inline Vec2d on_circle(double r, double angle) { return r * Vec2d(std::cos(angle), std::sin(angle)); }
 
-// ---- the reference example (method.md section 4) with any parabola / disk representation --------------
+// ---- the reference example (docs/method.md section 4) with any parabola / disk representation --------------
 
 /// Same mechanism as testing::paper_fourbar<double>() (scale 1, convex side), with the parabola and the two
 /// disks given as any profile. Variables: theta2, x, theta23, theta34, theta4, theta5.
@@ -125,7 +125,7 @@ inline std::vector<Vec2d> ellipse_samples(double a, double b, std::size_t n) {
 
 // ---- a non-circular gear pair synthesised from a transmission function (synthesis.hpp) -------------------
 // phi2 = -f(phi1), f(p) = p + k sin p (one turn of gear 2 per turn of gear 1), centre distance E:
-// pitch radii r1 = E f'/(1 + f'), r2 = E/(1 + f') (method.md section 5). The contact lies on the line of
+// pitch radii r1 = E f'/(1 + f'), r2 = E/(1 + f') (docs/method.md section 5). The contact lies on the line of
 // centres: gear 1's pitch point of body polar angle -p (radius r1(p)) touches gear 2's point of body polar
 // angle pi + f(p) (radius r2(p)) when phi1 = p.
 

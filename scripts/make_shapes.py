@@ -15,7 +15,7 @@ implementation of the formulas independent of the C++ code it is used to test:
     (-c, 0), c = a e): points (-c + a cos t, b sin t), t = 2 pi k / N, b = a sqrt(1 - e^2); closed,
     counter-clockwise from the vertex nearest the pivot, material inside;
   - non-circular gear pair for phi2 = f(phi1) = phi1 + k sin(phi1), k = 3/10, centre distance E = 2
-    (method.md section 5): r1 = E f'/(1 + f'), r2 = E/(1 + f'). Gear 1 turns by phi1 about the origin,
+    (docs/method.md section 5): r1 = E f'/(1 + f'), r2 = E/(1 + f'). Gear 1 turns by phi1 about the origin,
     gear 2 by -f(phi1) about (E, 0); the contact point lies on the line of centres at (r1, 0). In the body
     frames its polar angle is -phi1 on gear 1 and pi + f(phi1) on gear 2. Both files are sampled at equal
     body polar angles 2 pi j / N (counter-clockwise, material inside): gear 1 at phi1 = -2 pi j / N, gear 2

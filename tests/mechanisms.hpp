@@ -14,7 +14,7 @@ template <class S> struct Fixture {
   std::vector<int> held;
 };
 
-/// The reference example of method.md section 4 (variables: theta2, x, theta23, theta34, theta4, theta5).
+/// The reference example of docs/method.md section 4 (variables: theta2, x, theta23, theta34, theta4, theta5).
 /// `scale` multiplies every length; `osculating` puts disk 3 of radius 1/(2a) inside the parabola's cup.
 template <class S> Fixture<S> paper_fourbar(const S& scale = S(1), bool osculating = false,
                                             ArcLengthMethod arc = {}) {
@@ -61,7 +61,7 @@ template <class S> Fixture<S> planet_on_arm(const S& R, const S& r, bool outside
 /// Twin elliptical gears (semi-major a, eccentricity e), each on a revolute at a focus, pivots 2a apart;
 /// gear 1's nearest vertex touches gear 2's farthest vertex at phi1 = 0. Variables:
 /// phi1 (input), u (gear 1, eccentric anomaly), v (gear 2), phi2. The guess is the exact pose at phi1 = start
-/// (closed form of method.md section 5): as a cam pair the vertex poses are singular, because the contact
+/// (closed form of docs/method.md section 5): as a cam pair the vertex poses are singular, because the contact
 /// normal then passes through both pivots, so a cam mechanism is assembled away from them.
 template <class S> Fixture<S> elliptical_gears(const S& a, const S& e, bool rolling, ArcLengthMethod arc = {},
                                                const S& start = S(0)) {

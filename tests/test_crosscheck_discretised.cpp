@@ -1,4 +1,4 @@
-// Cross-check of the reference example (method.md section 4) with its contours given three ways: analytic
+// Cross-check of the reference example (docs/method.md section 4) with its contours given three ways: analytic
 // (Parabola, Circle), exact Bezier (BezierPath::parabola, BezierPath::circle) and sampled (C2 cubic splines
 // through the point files of shapes/). Contour parameters differ between representations, so the
 // mechanisms are compared through parameter-independent outputs: the revolute angle theta5 at O_B and the
@@ -145,7 +145,7 @@ std::vector<Difference> converge(const std::string& title, const std::vector<int
 
 BOOST_AUTO_TEST_CASE(analytic_reference_is_the_described_pose) {
   const Solved& a = analytic();
-  // Assembly (method.md section 4): disk 3 centre (3, 0); disk 4 centre the upper point 5 from (3, 0) and 2
+  // Assembly (docs/method.md section 4): disk 3 centre (3, 0); disk 4 centre the upper point 5 from (3, 0) and 2
   // from O_B = (7, -2).
   const auto& p0 = a.poses[50];  // theta2 = 0
   BOOST_TEST((p0[2].translation() - Vec2<double>(3, 0)).norm() < 1e-12);

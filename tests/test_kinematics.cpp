@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(link_poses_close_every_loop) {
   const SE2<double> via_chord = pose[0] * sd.kin.pairs[3].transform;
   BOOST_TEST((via_chord.translation() - pose[3].translation()).norm() < 1e-13);
   BOOST_TEST(std::abs(wrap_angle(via_chord.angle() - pose[3].angle())) < 1e-13);
-  // Disk 3's centre is at (3, 0) at assembly (contact at the vertex, method.md section 4).
+  // Disk 3's centre is at (3, 0) at assembly (contact at the vertex, docs/method.md section 4).
   BOOST_TEST((pose[2].translation() - Vec2<double>(3, 0)).norm() < 1e-13);
   // Disk 4's centre: the upper point 5 from (3, 0) and 2 from O_B = (7, -2): about (7.99303, -0.26394).
   const Vec2<double> c4 = pose[3].act(Vec2<double>(2, 0));

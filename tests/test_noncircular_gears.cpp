@@ -1,12 +1,12 @@
 // Gear pairs whose pitch curves are point samples (closed periodic splines through the files of shapes/):
 //  - twin elliptical gears (a = 2, e = 1/2, pivots at foci 2a apart) against the closed form
-//    tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2) (method.md section 5; gear 2 turns the other way);
+//    tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2) (docs/method.md section 5; gear 2 turns the other way);
 //  - the non-circular pair synthesised from phi2 = f(phi1) = phi1 + k sin(phi1) (k = 0.3, E = 2) by
 //    rollkin/synthesis.hpp: the samples agree with the files written by the independent Python generator,
 //    and the analysis gives back f (gear 2's revolute angle is -f(phi1)).
 // Sweeps run over more than a full turn of gear 1, so the contacts cross the seams of both closed splines.
 //
-// A rolling pair between two gears on fixed pivots is overconstrained (4 equations, 3 unknowns; method.md
+// A rolling pair between two gears on fixed pivots is overconstrained (4 equations, 3 unknowns; docs/method.md
 // section 3): consistent for the exact pitch curves, but the splines are only O(h^4) close to them, so the
 // constraints disagree by O(h^4) and Newton's least-squares residual stays at that level. The tests
 // therefore accept a least-squares residual up to 1e-3 (NewtonSettings::consistency_tolerance; the default
@@ -147,7 +147,7 @@ BOOST_AUTO_TEST_CASE(shipped_shape_files_are_valid_contours) {
 
 BOOST_AUTO_TEST_CASE(synthesis_reproduces_the_closed_form_and_the_shipped_files) {
   const auto t = TransmissionFunction<double>::sinusoidal(kGear);
-  // Radii (method.md section 5) and body angles at a few inputs, by hand.
+  // Radii (docs/method.md section 5) and body angles at a few inputs, by hand.
   for (double p : {0.0, 0.7, 2.0, -2.5}) {
     const auto r = pitch_radii(t, kE, p);
     const double fp = 1 + kGear * std::cos(p);

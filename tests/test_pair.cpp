@@ -1,5 +1,5 @@
 // Pair matrices: the spatial twists lambda_j = (dP/dq_j) P^-1 and their time derivatives against central
-// finite differences, and the rolling-contact rate relation of method.md section 5.
+// finite differences, and the rolling-contact rate relation of docs/method.md section 5.
 #define BOOST_TEST_MODULE pair
 #include <boost/test/unit_test.hpp>
 
@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(twist_rates_match_finite_differences) {
 }
 
 BOOST_AUTO_TEST_CASE(rolling_relative_motion_is_rotation_about_contact_at_curvature_sum_rate) {
-  // method.md section 5: relative angular velocity = contact speed x (kappa_A + kappa_B), no slip velocity.
+  // docs/method.md section 5: relative angular velocity = contact speed x (kappa_A + kappa_B), no slip velocity.
   const auto cs = two_contours();
   const std::array<double, 2> q{0.6, 2.1};
   const auto st = evaluate_pair(contact_pair(true), cs, q.data(), nullptr, 2);

@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(curvatures_match_closed_forms) {
 BOOST_AUTO_TEST_CASE(parabola_arc_length_closed_form_and_quadrature) {
   const double a = 0.5;
   const Parabola<double> closed(a, -2, 2);
-  // method.md section 5: s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a); from 0 to 2 with a = 1/2:
+  // docs/method.md section 5: s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a); from 0 to 2 with a = 1/2:
   const double expected = std::sqrt(5.0) + std::asinh(2.0) / 2;
   BOOST_TEST(closed.arc_length(0, 2) == expected, boost::test_tools::tolerance(1e-15));
   BOOST_TEST(closed.arc_length(2, -2) == -2 * expected, boost::test_tools::tolerance(1e-15));

@@ -16,7 +16,7 @@ using Seg = BezierSegment<double>;
 
 namespace {
 
-/// s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a) (method.md section 5).
+/// s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a) (docs/method.md section 5).
 double parabola_arc(double a, double x) { return x / 2 * std::sqrt(1 + 4 * a * a * x * x) + std::asinh(2 * a * x) / (4 * a); }
 
 std::string message_of(const std::vector<Seg>& segs, bool closed) {

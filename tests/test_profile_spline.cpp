@@ -37,7 +37,7 @@ std::vector<V> parabola_samples(int n, double a, double x0, double x1) {
   return q;
 }
 
-/// s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a) (method.md section 5).
+/// s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a) (docs/method.md section 5).
 double parabola_arc(double a, double x) { return x / 2 * std::sqrt(1 + 4 * a * a * x * x) + std::asinh(2 * a * x) / (4 * a); }
 
 std::vector<V> wavy_samples() {

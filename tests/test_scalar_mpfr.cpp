@@ -167,7 +167,7 @@ BOOST_AUTO_TEST_CASE(gauss_legendre_exact_for_degree_2n_minus_1) {
 BOOST_AUTO_TEST_CASE(parabola_arc_length_closed_form) {
   using std::asinh;
   using std::sqrt;
-  // integral_0^1 sqrt(1 + 4 x^2) dx = sqrt(5)/2 + asinh(2)/4  (method.md section 5, a = 1).
+  // integral_0^1 sqrt(1 + 4 x^2) dx = sqrt(5)/2 + asinh(2)/4  (docs/method.md section 5, a = 1).
   const S exact = sqrt(S(5)) / S(2) + asinh(S(2)) / S(4);
   auto f = [](const S& x) { return sqrt(S(1) + S(4) * x * x); };
   const rollkin::QuadratureRule rule{rollkin::Quadrature::GaussLegendre, 20, 8};

@@ -1,4 +1,4 @@
-// Closed forms of method.md section 5, solved as mechanisms: hypocycloid and epicycloid (overconstrained:
+// Closed forms of docs/method.md section 5, solved as mechanisms: hypocycloid and epicycloid (overconstrained:
 // redundant but consistent), twin elliptical gears as a rolling pair and as a cam pair, a disk rolling on a
 // line (cycloid), and an assembly that cannot close.
 #define BOOST_TEST_MODULE solve_closed_forms

@@ -1,5 +1,5 @@
 // Interference along a sweep (solve/interference.hpp) against closed-form geometry:
-//  - the reference example (method.md section 4) is interference-free over theta2 in [-50, 100] degrees;
+//  - the reference example (docs/method.md section 4) is interference-free over theta2 in [-50, 100] degrees;
 //  - a disk rolling on a floor that ends in a concave fillet and a vertical wall (one contour): the disk
 //    touches the wall at a second point, besides its rolling contact, when its centre reaches x = rho - r;
 //  - a planet on an arm inside a ring passing a fixed post (a third body): it touches the post where

@@ -2,7 +2,7 @@
 // tolerance double cannot reach by accident (1e-40 .. 1e-45), and used as the reference for the double
 // solver's accuracy (target: every pair variable to 1e-12 rad over the paper example's range).
 //  - paper example, theta2 in [-50, 100] deg by 1 deg: double vs MPFR, MPFR loop residual, MPFR no-slip
-//    against the parabola's closed-form arc length (method.md section 5);
+//    against the parabola's closed-form arc length (docs/method.md section 5);
 //  - hypocycloid, epicycloid and twin elliptical gears against their closed forms;
 //  - Gauss-Legendre arc length (instead of the closed form) converging to the closed-form solution;
 //  - the paper example's dead point located to ~1e-45 (fold of theta2 along the motion parametrised by the
@@ -46,7 +46,7 @@ template <class S> S max_residual(const Mechanism<S>& m, const VectorX<S>& q0, c
   return d.residual.cwiseAbs().maxCoeff();
 }
 
-/// Closed-form parabola arc length primitive (method.md section 5), in MPFR.
+/// Closed-form parabola arc length primitive (docs/method.md section 5), in MPFR.
 M parabola_s(const M& xx, const M& a) {
   using std::asinh;
   using std::sqrt;

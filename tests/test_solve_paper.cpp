@@ -1,4 +1,4 @@
-// The reference example of method.md section 4 over theta2 in [-50, 100] degrees: loop closure, no slip
+// The reference example of docs/method.md section 4 over theta2 in [-50, 100] degrees: loop closure, no slip
 // (arc lengths from the closed form of eq. 4, independent of the profile code), velocities and
 // accelerations against finite differences, and the two limits: the dead point and the parabola's end.
 #define BOOST_TEST_MODULE solve_paper
@@ -28,7 +28,7 @@ struct Paper {
   }
 };
 
-/// Closed-form parabola arc length primitive, method.md section 5 (a = 0.5).
+/// Closed-form parabola arc length primitive, docs/method.md section 5 (a = 0.5).
 double parabola_s(double xx) {
   const double a = 0.5, t = 2 * a * xx;
   return xx / 2 * std::sqrt(1 + t * t) + std::asinh(t) / (4 * a);
@@ -132,7 +132,7 @@ BOOST_AUTO_TEST_CASE(sweep_beyond_parabola_end_reports_domain_exit) {
 }
 
 BOOST_AUTO_TEST_CASE(osculating_variant_is_reported_singular) {
-  // Disk of radius 1/(2a) inside the cup: curvatures cancel at the vertex (method.md sections 4-5).
+  // Disk of radius 1/(2a) inside the cup: curvatures cancel at the vertex (docs/method.md sections 4-5).
   auto f = paper_fourbar<double>(1.0, true);
   SolveData<double> sd(f.mech);
   VectorX<double> q;

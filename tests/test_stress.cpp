@@ -70,7 +70,7 @@ double assembly_mode(const Mechanism<double>& m, const VectorX<double>& q) {
   return cross2<double>(c3 - ob, c4 - ob);
 }
 
-/// The paper example (method.md section 4) with link 2's parabola given as `shape` (same placement, x
+/// The paper example (docs/method.md section 4) with link 2's parabola given as `shape` (same placement, x
 /// increasing along the shape), assembled with the contact at parameter u_vertex (the parabola's vertex).
 Fixture<double> paper_with_profile(ProfileShape<double> shape, double u_vertex) {
   MechanismBuilder<double> b;

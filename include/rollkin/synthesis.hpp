@@ -1,4 +1,4 @@
-// Synthesis of a non-circular gear pair from its transmission function (method.md section 5).
+// Synthesis of a non-circular gear pair from its transmission function (docs/method.md section 5).
 //
 // Given phi2 = f(phi1), f monotone increasing (f' > 0), and the centre distance E, the pitch curves roll on
 // each other without slip while their contact point stays on the line of centres, at distances
@@ -66,7 +66,7 @@ template <class S> struct TransmissionFunction {
   }
 };
 
-/// Pitch radii at input angle phi1 (method.md section 5).
+/// Pitch radii at input angle phi1 (docs/method.md section 5).
 template <class S> struct PitchRadii {
   S r1, r2;
 };

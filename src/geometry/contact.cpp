@@ -37,7 +37,7 @@ using SegmentBox = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::siz
 // Samples per polyline in find_contact's first, coarse pass.
 constexpr std::size_t kCoarseSamples = 256;
 
-/// A polyline with the sample convention of validation.hpp.
+/// A polyline with the sample convention of geometry/validation.hpp.
 struct Polyline {
   const std::vector<Vec2<double>>& pts;
   bool closed;

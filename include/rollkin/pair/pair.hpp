@@ -1,4 +1,4 @@
-// Pair matrices and their derivatives (method.md sections 1-3). The closed set of pair types:
+// Pair matrices and their derivatives (docs/method.md sections 1-3). The closed set of pair types:
 //   revolute   P(theta) = Rot(theta)                                       1 variable
 //   prismatic  P(s)     = Trans(s, 0)   (slides along the joint frame's x)  1 variable
 //   cam        P(u, v)  = T_A(u) Rot(pi) T_B(v)^-1   point contact, slip     2 variables   (eq. 1)
@@ -13,7 +13,7 @@
 //   contact  lambda_u = Ad_{T_A} (sigma_A, 0, kappa_A sigma_A)
 //            lambda_v = Ad_{T_A} (sigma_B, 0, -kappa_B sigma_B)
 // so that at a rolling contact (sigma_A du = -sigma_B dv) the relative motion is a pure rotation about the
-// contact point at rate (kappa_A + kappa_B) ds (method.md section 5, rate relation).
+// contact point at rate (kappa_A + kappa_B) ds (docs/method.md section 5, rate relation).
 #pragma once
 
 #include "rollkin/profile/profile.hpp"

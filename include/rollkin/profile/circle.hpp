@@ -10,10 +10,15 @@ namespace rollkin {
 template <class S> class Circle {
  public:
   using Scalar = S;
-  /// Full circle (closed, u in [0, 2 pi)).
-  explicit Circle(const S& radius) : r_(radius), domain_{S(0), S(2) * pi<S>(), true} {}
-  /// Open arc u in [lo, hi] (radians).
-  Circle(const S& radius, const S& lo, const S& hi) : r_(radius), domain_{lo, hi, false} {}
+  /// Full circle (closed, u in [0, 2 pi)). Throws std::invalid_argument unless radius > 0 (finite).
+  explicit Circle(const S& radius) : r_(radius), domain_{S(0), S(2) * pi<S>(), true} {
+    require_positive(radius, "circle", "the radius");
+  }
+  /// Open arc u in [lo, hi] (radians). Throws std::invalid_argument unless radius > 0 and lo < hi.
+  Circle(const S& radius, const S& lo, const S& hi) : r_(radius), domain_{lo, hi, false} {
+    require_positive(radius, "circle", "the radius");
+    require_parameter_range(lo, hi, "circle arc");
+  }
 
   const S& radius() const { return r_; }
   Domain<S> domain() const { return domain_; }

@@ -18,7 +18,8 @@ template <class S> class Ellipse {
   using Scalar = S;
   Ellipse(const S& semi_x, const S& semi_y, ArcLengthMethod method = {})
       : a_(semi_x), b_(semi_y), domain_{S(0), S(2) * pi<S>(), true}, method_(method) {
-    if (!(semi_x > S(0)) || !(semi_y > S(0))) throw std::invalid_argument("ellipse: semi-axes must be positive");
+    require_positive(semi_x, "ellipse", "the semi-axis A");
+    require_positive(semi_y, "ellipse", "the semi-axis B");
     // The constants of s(t), computed once: the larger semi-axis, e, and for A >= B the shift and E(pi/2, e).
     using std::sqrt;
     const bool wide = a_ >= b_;

@@ -1,7 +1,7 @@
 // The profile concept and the differential geometry every contour shares.
 //
 // A *profile* is a planar parametric curve p(u) in its own contour frame, traversed with the link's
-// material on its LEFT (outward normal on the right, method.md section 3). Every profile type (analytic,
+// material on its LEFT (outward normal on the right, docs/method.md section 3). Every profile type (analytic,
 // sampled spline, Bezier path) is a class template on the scalar S with these members:
 //
 //   using Scalar = S;
@@ -15,12 +15,13 @@
 //   S arc_length_primitive(const S& u) const;  // s(u), arc_length(u0, u1) = s(u1) - s(u0)
 //   template <class T> Type<T> cast() const;   // same profile in another scalar type
 //
-// The contact pair (pair/contact.hpp) needs only the jet and the arc length; everything else below is
+// The contact pair (pair/pair.hpp) needs only the jet and the arc length; everything else below is
 // derived from the jet here, once, so all profile types agree on signs and formulas.
 #pragma once
 
 #include "rollkin/scalar.hpp"
 
+#include <stdexcept>
 #include <string>
 
 namespace rollkin {
@@ -56,6 +57,19 @@ template <class S> struct Domain {
   template <class T> Domain<T> cast() const { return {scalar_cast<T>(lo), scalar_cast<T>(hi), closed}; }
 };
 
+/// Throws std::invalid_argument("<what>: ...") unless lo < hi, both finite (a profile's parameter range).
+template <class S> void require_parameter_range(const S& lo, const S& hi, const char* what) {
+  using std::isfinite;
+  if (!isfinite(lo) || !isfinite(hi) || !(lo < hi))
+    throw std::invalid_argument(std::string(what) + ": the parameter range must be finite with lo < hi");
+}
+
+/// Throws std::invalid_argument("<what>: ...") unless x is finite and > 0 (a radius, a semi-axis).
+template <class S> void require_positive(const S& x, const char* what, const char* name) {
+  using std::isfinite;
+  if (!isfinite(x) || !(x > S(0))) throw std::invalid_argument(std::string(what) + ": " + name + " must be finite and > 0");
+}
+
 /// p(u) and its first three derivatives with respect to the parameter u.
 template <class S> struct Jet {
   Vec2<S> p, d1, d2, d3;
@@ -65,7 +79,7 @@ template <class S> struct Jet {
 /// Differential geometry at one point of a contour, derived from its jet. With sigma = |p'|:
 ///   tangent t = p'/sigma, outward normal n = -J t (right of t), signed curvature
 ///   kappa = (p' x p'')/sigma^3 (positive where the material side is convex),
-/// and the body twist of the contact frame along u, eta = (sigma, 0, kappa*sigma) (method.md section 2).
+/// and the body twist of the contact frame along u, eta = (sigma, 0, kappa*sigma) (docs/method.md section 2).
 template <class S> struct ContourPoint {
   Vec2<S> p, tangent;
   S speed;          // sigma = ds/du

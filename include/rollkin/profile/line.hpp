@@ -9,7 +9,8 @@ template <class S> class Line {
  public:
   using Scalar = S;
   /// Along the contour frame's x-axis from u = lo to u = hi; material on the left (+y side).
-  Line(const S& lo, const S& hi) : domain_{lo, hi, false} {}
+  /// Throws std::invalid_argument unless lo < hi (finite).
+  Line(const S& lo, const S& hi) : domain_{lo, hi, false} { require_parameter_range(lo, hi, "line"); }
 
   Domain<S> domain() const { return domain_; }
   ParamKind parameter_kind() const { return ParamKind::Length; }

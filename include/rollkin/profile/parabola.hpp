@@ -1,6 +1,6 @@
 // Parabola y = a x^2 in its contour frame, parameter u = x, traversed with x increasing: the material is
 // on the left, i.e. the region y > a x^2 (for a > 0 the inside of the cup, a convex region).
-// Closed forms (method.md section 5): s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a),
+// Closed forms (docs/method.md section 5): s(x) = x/2 sqrt(1 + 4a^2x^2) + asinh(2ax)/(4a),
 // tangent angle atan(2ax), curvature 2a/(1 + 4a^2x^2)^(3/2).
 #pragma once
 
@@ -15,7 +15,10 @@ template <class S> class Parabola {
   using Scalar = S;
   Parabola(const S& a, const S& lo, const S& hi, ArcLengthMethod method = {})
       : a_(a), domain_{lo, hi, false}, method_(method) {
+    using std::isfinite;
     if (a == S(0)) throw std::invalid_argument("parabola: a must be non-zero (use a line)");
+    if (!isfinite(a)) throw std::invalid_argument("parabola: a must be finite");
+    require_parameter_range(lo, hi, "parabola");
   }
 
   const S& a() const { return a_; }

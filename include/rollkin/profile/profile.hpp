@@ -3,7 +3,7 @@
 //
 // Material side: every profile type defines a natural direction (see its header); when the scene says the
 // material lies on the other side, the contour runs the profile backwards, u -> -u, so that the material is
-// on the left again (method.md section 3). Derivatives of odd order change sign under that reversal.
+// on the left again (docs/method.md section 3). Derivatives of odd order change sign under that reversal.
 #pragma once
 
 #include "rollkin/profile/arc_length_parameterised.hpp"

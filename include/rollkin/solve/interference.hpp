@@ -4,11 +4,11 @@
 // For every solved pose of a SweepResult the link poses are computed (evaluate_pairs, link_poses), every
 // contour is sampled (samples_per_contour points, equally spaced in its parameter, once, in its link frame)
 // and placed in the world, and each contour pair is handed to geometry::check_interference (the CGAL
-// boundary: box intersection, exact crossing predicate; contact.hpp). Of the zones where two polylines
+// boundary: box intersection, exact crossing predicate; geometry/contact.hpp). Of the zones where two polylines
 // come within the touch tolerance, the one at a contact pair's own contact point is the modelled contact
 // and is not reported; any other zone is a finding: Penetration if the polylines cross there, SecondTouch
 // otherwise. Optionally each contact pair's curvatures are checked too: with both contours material-on-left
-// the bodies stay apart near the contact only if kappa_A + kappa_B >= 0 (method.md section 5); below
+// the bodies stay apart near the contact only if kappa_A + kappa_B >= 0 (docs/method.md section 5); below
 // -curvature_tolerance that is a CurvatureInterference finding (local overlap that sampled polylines of a
 // nearly conformal contact cannot resolve).
 //
