@@ -64,7 +64,10 @@ fi
 log "configuring $build_type build in $root/$build_dir"
 sanitize=OFF
 if [[ "${ROLLKIN_SANITIZE:-0}" == 1 ]]; then sanitize=ON; fi
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize"
+# A compiler cache, where one is installed, makes rebuilds of a second build directory cheap (not required).
+launcher=()
+if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize" "${launcher[@]}"
 
 # ---- 3. build ------------------------------------------------------------------------------------------
 log "building with $jobs jobs"
