@@ -46,7 +46,7 @@ using Rng = std::mt19937_64;
 double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 /// 10^U(-6, 6): the scale every length of a random mechanism is multiplied by.
-double random_scale(Rng& rng) { return std::pow(10.0, uniform(rng, -6, 6)); }
+double random_scale(Rng& rng) { return std::pow(10.0, uniform(rng, -6, 6)); }  // (gear trains: powers of two)
 
 /// A random mechanism in double, with a description of the draw for failure messages and the closed form
 /// (in MPFR) of one variable against the input, when there is one.
@@ -55,7 +55,7 @@ struct Case {
   Fixture<double> f;
   std::vector<double> inputs;  // radians
   int checked = -1;            // variable with a closed form, or -1
-  std::function<M(const M&)> closed_form;
+  std::function<M(const M&, const VectorX<M>&)> closed_form;  // (input, assembled pose)
 };
 
 std::vector<double> degrees_grid(double from, double to, double step) {
@@ -65,21 +65,34 @@ std::vector<double> degrees_grid(double from, double to, double step) {
 }
 
 // ---- gear train ----------------------------------------------------------------------------------------
-/// Gears 0..n-1 on fixed pivots, gear k + 1 touching gear k from outside in a random direction a_k; each
-/// rolling pair's parameters are polar angles (circle parameter), u = a_k on gear k and v = a_k + pi on
-/// gear k + 1 at phi = 0. Variables: phi0 (input), then per gear k >= 1: u, v of the mesh, phi_k.
+/// Gears 0..n-1 on fixed pivots, gear k + 1 touching gear k from outside in the direction (a, b) / c of a
+/// Pythagorean triple. Radii are integers, pivot offsets integer multiples of (a, b) and the scale a power of
+/// two, so every length is exact in double: the rolling constraint is redundant and must stay consistent to
+/// 50 digits in the MPFR run, which a rounded pivot position would break. Each rolling pair's parameters
+/// are polar angles (circle parameter): u = atan2(b, a) on gear k and v = u + pi on gear k + 1 at phi = 0.
+/// Variables: phi0 (input), then per gear k >= 1: phi_k and u, v of the mesh.
 Case gear_train(Rng& rng) {
+  static const int triples[][3] = {{3, 4, 5}, {4, 3, 5}, {5, 12, 13}, {12, 5, 13}, {8, 15, 17}, {1, 0, 1}, {0, 1, 1}};
   const int n = std::uniform_int_distribution<int>(2, 4)(rng);
-  const double scale = random_scale(rng);
-  std::vector<double> r(n), a(n - 1);
-  for (auto& x : r) x = uniform(rng, 0.3, 3.0);
-  for (auto& x : a) x = uniform(rng, -pi<double>(), pi<double>());
+  const double scale = std::ldexp(1.0, std::uniform_int_distribution<int>(-20, 20)(rng));  // 1e-6 .. 1e6
+  std::vector<double> r{double(std::uniform_int_distribution<int>(1, 12)(rng))}, a;
+  std::vector<Vec2<double>> offsets;
+  while (static_cast<int>(r.size()) < n) {
+    const int* t = triples[std::uniform_int_distribution<int>(0, 6)(rng)];
+    const int next = std::uniform_int_distribution<int>(1, 12)(rng);
+    if ((static_cast<int>(r.back()) + next) % t[2] != 0) continue;
+    const int m = (static_cast<int>(r.back()) + next) / t[2];
+    const int sx = std::uniform_int_distribution<int>(0, 1)(rng) ? 1 : -1, sy = std::uniform_int_distribution<int>(0, 1)(rng) ? 1 : -1;
+    offsets.emplace_back(sx * m * t[0] * scale, sy * m * t[1] * scale);
+    a.push_back(std::atan2(double(sy * t[1]), double(sx * t[0])));
+    r.push_back(next);
+  }
   MechanismBuilder<double> b;
   const int ground = b.link("ground", true);
   std::vector<int> gears, rims, pivots, meshes;
   Vec2<double> centre(0, 0);
   for (int k = 0; k < n; ++k) {
-    if (k > 0) centre += (r[k - 1] + r[k]) * scale * Vec2<double>(std::cos(a[k - 1]), std::sin(a[k - 1]));
+    if (k > 0) centre += offsets[k - 1];
     gears.push_back(b.link("gear" + std::to_string(k)));
     rims.push_back(b.contour(gears[k], "rim", Circle<double>(r[k] * scale)));
     pivots.push_back(b.revolute("pivot" + std::to_string(k), ground, gears[k], SE2<double>(0, centre), {},
@@ -97,9 +110,11 @@ Case gear_train(Rng& rng) {
   }
   c.inputs = degrees_grid(-180, 180, 30);
   c.checked = b.variable(pivots[n - 1]);
-  // Pure rolling of gear k on gear k + 1: r_k dphi_k = -r_{k+1} dphi_{k+1}.
+  // Pure rolling of gear k on gear k + 1: r_k dphi_k = -r_{k+1} dphi_{k+1}, counted from the assembled pose
+  // (a circle's turn is fixed by the rolling rows relative to it, not by the loops).
   const M ratio = M((n - 1) % 2 ? -1 : 1) * M(r[0]) / M(r[n - 1]);
-  c.closed_form = [ratio](const M& phi0) { return ratio * phi0; };
+  const int last = c.checked;
+  c.closed_form = [ratio, last](const M& phi0, const VectorX<M>& q0) { return q0(last) + ratio * (phi0 - q0(0)); };
   std::ostringstream name;
   name << "gear train of " << n << " (scale " << scale << ")";
   c.name = name.str();
@@ -172,7 +187,9 @@ Case four_bar(Rng& rng) {
   c.f.guess << 0, coupler0, rocker0 - coupler0, rocker0;
   c.inputs = degrees_grid(0, 360, 30);
   c.checked = 3;
-  c.closed_form = [g](const M& t) { return four_bar_angles<M>(g, t).second; };
+  // The closed form on the very lengths the mechanism holds (scaled and rounded in double).
+  const FourBar exact{g.crank * s, g.coupler * s, g.rocker * s, g.frame * s};
+  c.closed_form = [exact](const M& t, const VectorX<M>&) { return four_bar_angles<M>(exact, t).second; };
   std::ostringstream name;
   name << "four-bar " << g.crank << ", " << g.coupler << ", " << g.rocker << ", " << g.frame << " (scale " << s << ")";
   c.name = name.str();
@@ -247,7 +264,7 @@ void check_double_against_mpfr(const Case& c) {
                                                      << " > " << tol << " (condition " << rep.condition << ")");
       }
       if (c.checked >= 0) {  // the MPFR run itself against the closed form
-        const M truth = c.closed_form(inputs_m[k]);
+        const M truth = c.closed_form(inputs_m[k], q0m);
         const M error = abs(wrap_angle(M(rm.poses[k].q(c.checked) - truth)));
         BOOST_TEST(error < M(std::string("1e-35")),
                    "MPFR " << m.variables[c.checked].name << " vs closed form at " << c.inputs[k] << ": " << error.str(3));
