@@ -91,8 +91,8 @@ std::string local_name(const pugi::xml_node& n) {
 
 std::string element_location(const std::string& text, const pugi::xml_node& n) {
   std::string id = n.attribute("id").value();
-  std::string s = "line " + std::to_string(line_column(text, n.offset_debug()).first) + ", " + local_name(n);
-  return id.empty() ? "<" + s + ">" : s + " \"" + id + "\"";
+  const std::string line = "line " + std::to_string(line_column(text, n.offset_debug()).first) + ", ";
+  return line + (id.empty() ? "<" + local_name(n) + ">" : local_name(n) + " \"" + id + "\"");
 }
 
 // ---- numbers, lengths and units -------------------------------------------------------------------------

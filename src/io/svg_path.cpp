@@ -40,15 +40,17 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   const P half = (a.from - a.to) / 2;
   const double x1 = c * half.x() + s * half.y(), y1 = -s * half.x() + c * half.y();
   // F.6.6.2-3: radii too small to span the chord are scaled up uniformly.
+  // Scaled up, the radii span the chord exactly: the centre is the chord's midpoint (k = 0 below), which
+  // F.6.5.2 would only reach through sqrt(round-off), an error of sqrt(eps) in the centre.
   const double lambda = x1 * x1 / (rx * rx) + y1 * y1 / (ry * ry);
-  if (lambda > 1) {
+  if (lambda >= 1) {
     rx *= std::sqrt(lambda);
     ry *= std::sqrt(lambda);
   }
   // F.6.5.2: centre in the ellipse's axes; the sign picks one of the two candidate centres.
   const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
   const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-  double k = std::sqrt(std::max(0.0, num / den));
+  double k = lambda >= 1 ? 0.0 : std::sqrt(std::max(0.0, num / den));
   if (a.large_arc == a.sweep) k = -k;
   const double cx1 = k * rx * y1 / ry, cy1 = -k * ry * x1 / rx;
   // F.6.5.3: centre in user space.
