@@ -304,6 +304,9 @@ BOOST_AUTO_TEST_CASE(closed_path_with_round_off_duplicate_end_is_a_usable_contou
   // polygon repeating its first point: no zero-length closing edge either
   const SvgShape tri = read_svg_shape_from_text(doc("<polygon id=\"t\" points=\"0,0 4,0 0,3 0,0\"/>"), "t", {}, "c.svg");
   BOOST_TEST(tri.segments.size() == 3u);
+  const SvgShape near = read_svg_shape_from_text(doc("<polygon id=\"t\" points=\"0,0 4,0 0,3 1e-17,0\"/>"), "t", {}, "c.svg");
+  BOOST_TEST(near.segments.size() == 3u);
+  BOOST_TEST((near.segments.back().points.back() == V(0, 0)));
 }
 
 // ---- compatibility entry point used by the scene reader ---------------------------------------------------

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace rollkin {
@@ -353,11 +354,9 @@ std::string href_of(const pugi::xml_node& use) {
 /// ancestor, CSS transforms (style sheets, style attributes), <defs>/<symbol> and nested <svg> ancestors.
 void check_nothing_ignored(const pugi::xml_node& root, const pugi::xml_node& element, const std::string& text,
                            const Where& where) {
-  std::vector<pugi::xml_node> chain;  // the element and its ancestors below the root
-  for (pugi::xml_node n = element; n && n != root; n = n.parent()) chain.push_back(n);
-  for (const pugi::xml_node& n : chain) {
+  std::map<std::string, pugi::xml_node> chain_ids;  // ids of the element and its ancestors below the root
+  for (pugi::xml_node n = element; n && n != root; n = n.parent()) {
     const std::string kind = local_name(n);
-    const std::string self = n == element ? "the element" : "its ancestor " + element_location(text, n);
     if (kind == "defs" || kind == "symbol" || kind == "clipPath" || kind == "mask" || kind == "marker" ||
         kind == "pattern")
       where.fail("the element is inside <" + kind + "> (" + element_location(text, n) +
@@ -367,8 +366,10 @@ void check_nothing_ignored(const pugi::xml_node& root, const pugi::xml_node& ele
       where.fail("the element is inside a nested <svg> viewport (" + element_location(text, n) +
                  "), which rollkin does not apply; ungroup it in the editor");
     if (has_css_transform(n.attribute("style").value()))
-      where.fail(self + " has a CSS transform in style=\"" + std::string(n.attribute("style").value()) +
+      where.fail((n == element ? "the element" : "its ancestor " + element_location(text, n)) +
+                 " has a CSS transform in style=\"" + std::string(n.attribute("style").value()) +
                  "\", which rollkin does not apply; use the transform attribute instead");
+    if (const std::string id = n.attribute("id").value(); !id.empty()) chain_ids.emplace("#" + id, n);
   }
   for_each_element(root, [&](const pugi::xml_node& n) {
     const std::string kind = local_name(n);
@@ -376,39 +377,34 @@ void check_nothing_ignored(const pugi::xml_node& root, const pugi::xml_node& ele
       where.fail("the document's <style> sheet (" + element_location(text, n) +
                  ") sets a CSS transform, which rollkin does not apply; use transform attributes instead");
     if (kind != "use") return;
-    const std::string href = href_of(n);
-    for (const pugi::xml_node& c : chain) {
-      const std::string id = c.attribute("id").value();
-      if (!id.empty() && href == "#" + id)
-        where.fail(std::string(c == element ? "the element" : "its ancestor \"" + id + "\"") + " is referenced by <use> (" +
-                   element_location(text, n) + "), which draws a copy elsewhere that rollkin does not follow; "
-                   "unlink the clone in the editor (Edit > Clone > Unlink Clone) and select the copy you mean");
-    }
+    const auto used = chain_ids.find(href_of(n));
+    if (used == chain_ids.end()) return;
+    where.fail((used->second == element ? std::string("the element")
+                                        : "its ancestor \"" + std::string(used->second.attribute("id").value()) + "\"") +
+               " is referenced by <use> (" + element_location(text, n) +
+               "), which draws a copy elsewhere that rollkin does not follow; "
+               "unlink the clone in the editor (Edit > Clone > Unlink Clone) and select the copy you mean");
   });
 }
 
 // ---- element geometry in its own user coordinates -------------------------------------------------------
-
-struct Geometry {
-  SvgSubpath path;  // segments, closed, origins
-};
 
 /// Quarter arc from c + u to c + v through the corner c + u + v: exact rational quadratic, weight cos(45 deg).
 Segment quarter_arc(const P& c, const P& u, const P& v) {
   return Segment{{c + u, c + u + v, c + v}, {1.0, std::sqrt(0.5), 1.0}};
 }
 
-Geometry ellipse_geometry(double cx, double cy, double rx, double ry, const std::string& kind) {
+SvgSubpath ellipse_geometry(double cx, double cy, double rx, double ry, const std::string& kind) {
   // SVG 2, 10.4-10.5: from (cx + rx, cy) through (cx, cy + ry), (cx - rx, cy), (cx, cy - ry).
   const P c(cx, cy), ex(rx, 0), ey(0, ry);
-  Geometry g;
-  g.path.segments = {quarter_arc(c, ex, ey), quarter_arc(c, ey, -ex), quarter_arc(c, -ex, -ey), quarter_arc(c, -ey, ex)};
-  for (int k = 1; k <= 4; ++k) g.path.origins.push_back("quarter " + std::to_string(k) + " of the " + kind);
-  g.path.closed = true;
+  SvgSubpath g;
+  g.segments = {quarter_arc(c, ex, ey), quarter_arc(c, ey, -ex), quarter_arc(c, -ex, -ey), quarter_arc(c, -ey, ex)};
+  for (int k = 1; k <= 4; ++k) g.origins.push_back("quarter " + std::to_string(k) + " of the " + kind);
+  g.closed = true;
   return g;
 }
 
-Geometry rect_geometry(const pugi::xml_node& n, const Where& where) {
+SvgSubpath rect_geometry(const pugi::xml_node& n, const Where& where) {
   const double x = user_length(n, "x", where, 0.0), y = user_length(n, "y", where, 0.0);
   const double w = user_length(n, "width", where, std::nullopt), h = user_length(n, "height", where, std::nullopt);
   if (!(w > 0) || !(h > 0)) where.fail("width and height must be positive, got " + fmt(w) + " x " + fmt(h));
@@ -421,17 +417,17 @@ Geometry rect_geometry(const pugi::xml_node& n, const Where& where) {
   if (!has_ry) ry = rx;
   rx = std::min(rx, w / 2);
   ry = std::min(ry, h / 2);
-  Geometry g;
-  g.path.closed = true;
+  SvgSubpath g;
+  g.closed = true;
   auto line = [&](const P& a, const P& b, const std::string& side) {
     if (a == b) return;
-    g.path.segments.push_back(Segment{{a, b}, {}});
-    g.path.origins.push_back(side + " side of the rect");
+    g.segments.push_back(Segment{{a, b}, {}});
+    g.origins.push_back(side + " side of the rect");
   };
   auto corner = [&](const P& c, const P& u, const P& v, const std::string& name) {
     if (rx == 0 || ry == 0) return;
-    g.path.segments.push_back(quarter_arc(c, u, v));
-    g.path.origins.push_back(name + " rounded corner of the rect");
+    g.segments.push_back(quarter_arc(c, u, v));
+    g.origins.push_back(name + " rounded corner of the rect");
   };
   const P ex(rx, 0), ey(0, ry);
   // SVG 2, 10.2 path equivalent: start at (x + rx, y), clockwise on screen.
@@ -446,27 +442,27 @@ Geometry rect_geometry(const pugi::xml_node& n, const Where& where) {
   return g;
 }
 
-Geometry poly_geometry(const pugi::xml_node& n, bool closed, const std::string& kind, const Where& where) {
+SvgSubpath poly_geometry(const pugi::xml_node& n, bool closed, const std::string& kind, const Where& where) {
   if (!n.attribute("points")) where.fail("has no points attribute; expected points=\"x1,y1 x2,y2 ...\"");
   const std::vector<double> v = number_list(n.attribute("points").value(), "points", where);
   if (v.size() % 2 != 0)
     where.fail("points has an odd count of numbers (" + std::to_string(v.size()) + "); expected x,y pairs");
   if (v.size() < 4) where.fail("points has fewer than 2 points; a contour needs at least one edge");
-  Geometry g;
+  SvgSubpath g;
   const std::size_t count = v.size() / 2;
   for (std::size_t k = 0; k < (closed ? count : count - 1); ++k) {
     const std::size_t next = (k + 1) % count;
     const P a(v[2 * k], v[2 * k + 1]), b(v[2 * next], v[2 * next + 1]);
     if (a == b) continue;  // repeated point (also the closing point of a polygon that repeats its first)
-    g.path.segments.push_back(Segment{{a, b}, {}});
-    g.path.origins.push_back("edge from point " + std::to_string(k + 1) + " to point " + std::to_string(next + 1) +
+    g.segments.push_back(Segment{{a, b}, {}});
+    g.origins.push_back("edge from point " + std::to_string(k + 1) + " to point " + std::to_string(next + 1) +
                              " of the " + kind);
   }
-  g.path.closed = closed;
+  g.closed = closed;
   return g;
 }
 
-Geometry path_geometry(const pugi::xml_node& n, const std::string& file, const Where& where) {
+SvgSubpath path_geometry(const pugi::xml_node& n, const std::string& file, const Where& where) {
   if (!n.attribute("d")) where.fail("has no d attribute; expected the path data d=\"M ...\"");
   std::vector<SvgSubpath> subs = svg_detail::parse_path_data(n.attribute("d").value(), file, where.location);
   if (subs.size() != 1) {
@@ -476,10 +472,10 @@ Geometry path_geometry(const pugi::xml_node& n, const std::string& file, const W
                             : "the path data has " + std::to_string(subs.size()) + " subpaths (starting at " + starts +
                                   "); a contour is one subpath: break the path apart in the editor and select one");
   }
-  return Geometry{std::move(subs.front())};
+  return std::move(subs.front());
 }
 
-Geometry element_geometry(const pugi::xml_node& n, const std::string& kind, const std::string& file, const Where& where) {
+SvgSubpath element_geometry(const pugi::xml_node& n, const std::string& kind, const std::string& file, const Where& where) {
   auto positive = [&](double r, const char* name) {
     if (!(r > 0)) where.fail(std::string(name) + " must be positive, got " + fmt(r));
     return r;
@@ -502,9 +498,9 @@ Geometry element_geometry(const pugi::xml_node& n, const std::string& kind, cons
     const P a(user_length(n, "x1", where, 0.0), user_length(n, "y1", where, 0.0));
     const P b(user_length(n, "x2", where, 0.0), user_length(n, "y2", where, 0.0));
     if (a == b) where.fail("has zero length (x1, y1 = x2, y2); a contour needs a non-zero extent");
-    Geometry g;
-    g.path.segments = {Segment{{a, b}, {}}};
-    g.path.origins = {"the line"};
+    SvgSubpath g;
+    g.segments = {Segment{{a, b}, {}}};
+    g.origins = {"the line"};
     return g;
   }
   if (kind == "polyline" || kind == "polygon") return poly_geometry(n, kind == "polygon", kind, where);
@@ -611,15 +607,20 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   shape.location = element_location(text, element);
   const Where where{file, shape.location};
   check_nothing_ignored(root, element, text, where);
-  Geometry g = element_geometry(element, shape.element, file, where);
+  SvgSubpath g = element_geometry(element, shape.element, file, where);
+  svg_detail::drop_degenerate_segments(g);  // e.g. a polygon whose last point repeats the first to round-off
 
   // Step 1: the element's transform, then its ancestors', innermost first.
   Affine m;
   std::size_t transforms = 0;
   for (pugi::xml_node n = element; n && n != root; n = n.parent())
     if (const pugi::xml_attribute t = n.attribute("transform")) {
-      const Where at{file, element_location(text, n)};
-      m = parse_transform(t.value(), n == element ? where : Where{file, where.location + " (its ancestor " + at.location + ")"}) * m;
+      try {
+        m = parse_transform(t.value(), where) * m;
+      } catch (const InputError& e) {
+        if (n == element) throw;
+        throw InputError(file, where.location + " (its ancestor " + element_location(text, n) + ")", e.message());
+      }
       ++transforms;
     }
   if (root.attribute("transform"))
@@ -633,11 +634,11 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   const Affine total = Affine::scale(k, options.flip_y ? -k : k) * vp.map * m;
   if (total.degenerate())
     where.fail("the combined transform (element, groups, viewBox, scale) is degenerate; expected an invertible map");
-  for (Segment& s : g.path.segments)
+  for (Segment& s : g.segments)
     for (P& p : s.points) p = total(p);
-  shape.segments = std::move(g.path.segments);
-  shape.origins = std::move(g.path.origins);
-  shape.closed = g.path.closed;
+  shape.segments = std::move(g.segments);
+  shape.origins = std::move(g.origins);
+  shape.closed = g.closed;
   if (shape.segments.empty()) where.fail("draws nothing (every segment has zero length)");
   shape.corners = find_corners(shape, options.corner_tolerance);
 
