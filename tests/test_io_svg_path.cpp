@@ -169,6 +169,7 @@ BOOST_AUTO_TEST_CASE(path_data_errors_name_the_command_and_offset) {
   // Coordinate sets repeated without their letter are counted within the command, as the user reads them.
   BOOST_TEST(contains(error_for("M 0 0 L 1 1 2 2 3"), "command 2 (L, set 3), d offset 17: expected a number"));
   BOOST_TEST(contains(error_for("M 0 0 L 1 1 2 1e999"), "command 2 (L, set 2), d offset 14: number 1e999 out of range"));
+  BOOST_TEST(contains(error_for("m 1e308 0 l 1e308 0"), "command 2 (l), d offset 19: the coordinates overflow"));
 }
 
 // Defect 9 (issue 11): a path closed by Z after a last point equal to the first up to round-off used to

@@ -366,6 +366,9 @@ BOOST_AUTO_TEST_CASE(transforms_not_understood_or_degenerate_are_errors) {
   BOOST_TEST(contains(with("scale(0, 1)", true), "path \"p\" (its ancestor line 3, g \"g\"): transform=\"scale(0, 1)\""));
   BOOST_TEST(contains(with("scale(1e200)"), "scale() is degenerate"));  // det overflows
   BOOST_TEST(contains(with("translate(1e308) translate(1e308)"), "the combined transform (element, groups, viewBox, scale) is degenerate"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"1\" cx=\"1e308\" transform=\"translate(1e308)\"/>"), "c"),
+                      "circle \"c\": the transforms, viewBox and scale map the shape beyond the largest double"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"1e308\" cx=\"1e308\"/>"), "c"), "circle \"c\": the shape's control points overflow"));
 }
 
 BOOST_AUTO_TEST_CASE(element_kind_id_and_numbers_errors) {

@@ -581,6 +581,13 @@ std::vector<SvgCorner> find_corners(const SvgShape& s, double corner_tolerance) 
   return out;
 }
 
+bool all_finite(const std::vector<Segment>& segments) {
+  for (const Segment& s : segments)
+    for (const P& p : s.points)
+      if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return false;
+  return true;
+}
+
 std::string read_file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", std::string("cannot open the SVG file: ") + std::strerror(errno));
@@ -608,6 +615,9 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   const Where where{file, shape.location};
   check_nothing_ignored(root, element, text, where);
   SvgSubpath g = element_geometry(element, shape.element, file, where);
+  if (!all_finite(g.segments))
+    where.fail("the shape's control points overflow (a coordinate or radius near the largest double); expected "
+               "coordinates of a drawing");
   svg_detail::drop_degenerate_segments(g);  // e.g. a polygon whose last point repeats the first to round-off
 
   // Step 1: the element's transform, then its ancestors', innermost first.
@@ -636,6 +646,9 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
     where.fail("the combined transform (element, groups, viewBox, scale) is degenerate; expected an invertible map");
   for (Segment& s : g.segments)
     for (P& p : s.points) p = total(p);
+  if (!all_finite(g.segments))
+    where.fail("the transforms, viewBox and scale map the shape beyond the largest double (overflow); expected "
+               "the transforms of a drawing");
   shape.segments = std::move(g.segments);
   shape.origins = std::move(g.origins);
   shape.closed = g.closed;

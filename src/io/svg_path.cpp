@@ -177,6 +177,10 @@ class PathDataParser {
   }
 
   void add(Segment s) {
+    for (const P& q : s.points)
+      if (!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        fail("the coordinates overflow (relative moves add up beyond the largest double); expected the "
+             "coordinates of a drawing");
     bool degenerate = true;
     for (const P& q : s.points) degenerate = degenerate && q == s.points.front();
     if (degenerate) return;
@@ -328,6 +332,7 @@ double control_extent(const std::vector<BezierSegment<double>>& segments) {
 
 void drop_degenerate_segments(SvgSubpath& sub) {
   const double tol = BezierPathOptions<double>{}.joint_tolerance * control_extent(sub.segments);
+  if (!std::isfinite(tol)) return;  // an overflowing shape is refused by the caller, with its own message
   std::vector<Segment> kept;
   std::vector<std::string> origins;
   std::optional<P> pending_start;  // the start of dropped leading pieces, for the first kept segment
