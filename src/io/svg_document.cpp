@@ -588,6 +588,40 @@ bool all_finite(const std::vector<Segment>& segments) {
   return true;
 }
 
+/// Step 1: the element's transform, then its ancestors', innermost first (SVG 1.1, 7.5); counts them.
+Affine element_to_root(const pugi::xml_node& root, const pugi::xml_node& element, const std::string& text,
+                       const Where& where, std::size_t& count) {
+  Affine m;
+  for (pugi::xml_node n = element; n && n != root; n = n.parent())
+    if (const pugi::xml_attribute t = n.attribute("transform")) {
+      try {
+        m = parse_transform(t.value(), where) * m;
+      } catch (const InputError& e) {
+        if (n == element) throw;
+        throw InputError(where.file, where.location + " (its ancestor " + element_location(text, n) + ")", e.message());
+      }
+      ++count;
+    }
+  if (root.attribute("transform"))
+    where.fail("the root <svg> has a transform attribute, which rollkin does not apply; move it to a <g>");
+  return m;
+}
+
+/// The one line for --verbose: what steps 1-5 did.
+std::string conversion_line(const SvgShape& shape, std::size_t transforms, const Viewport& vp, const SvgReadOptions& o) {
+  std::ostringstream line;
+  line << shape.file << " " << shape.location << ": " << transforms << " transform attribute(s) applied; "
+       << vp.description << "; ";
+  if (vp.metres && o.metres_per_scene_unit)
+    line << vp.unit << " -> scene units x " << fmt(shape.unit_factor);
+  else if (vp.metres)
+    line << "file unit " << vp.unit << " kept (the scene declares no units.length)";
+  else
+    line << "numbers kept (the file declares no unit)";
+  line << (o.flip_y ? "; y flipped" : "; y not flipped") << "; scale " << fmt(o.scale);
+  return line.str();
+}
+
 std::string read_file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", std::string("cannot open the SVG file: ") + std::strerror(errno));
@@ -620,22 +654,8 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
                "coordinates of a drawing");
   svg_detail::drop_degenerate_segments(g);  // e.g. a polygon whose last point repeats the first to round-off
 
-  // Step 1: the element's transform, then its ancestors', innermost first.
-  Affine m;
   std::size_t transforms = 0;
-  for (pugi::xml_node n = element; n && n != root; n = n.parent())
-    if (const pugi::xml_attribute t = n.attribute("transform")) {
-      try {
-        m = parse_transform(t.value(), where) * m;
-      } catch (const InputError& e) {
-        if (n == element) throw;
-        throw InputError(file, where.location + " (its ancestor " + element_location(text, n) + ")", e.message());
-      }
-      ++transforms;
-    }
-  if (root.attribute("transform"))
-    where.fail("the root <svg> has a transform attribute, which rollkin does not apply; move it to a <g>");
-  // Steps 2-5.
+  const Affine m = element_to_root(root, element, text, where, transforms);
   const Viewport vp = root_viewport(root, Where{file, element_location(text, root)});
   shape.metres_per_file_unit = vp.metres;
   shape.file_unit = vp.unit;
@@ -655,17 +675,7 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   if (shape.segments.empty()) where.fail("draws nothing (every segment has zero length)");
   shape.corners = find_corners(shape, options.corner_tolerance);
 
-  std::ostringstream line;
-  line << file << " " << shape.location << ": " << transforms << " transform attribute(s) applied; " << vp.description
-       << "; ";
-  if (vp.metres && options.metres_per_scene_unit)
-    line << vp.unit << " -> scene units x " << fmt(shape.unit_factor);
-  else if (vp.metres)
-    line << "file unit " << vp.unit << " kept (the scene declares no units.length)";
-  else
-    line << "numbers kept (the file declares no unit)";
-  line << (options.flip_y ? "; y flipped" : "; y not flipped") << "; scale " << fmt(options.scale);
-  shape.conversion = line.str();
+  shape.conversion = conversion_line(shape, transforms, vp, options);
   return shape;
 }
 
