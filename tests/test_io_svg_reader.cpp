@@ -340,11 +340,17 @@ BOOST_AUTO_TEST_CASE(use_references_are_errors) {
 
 BOOST_AUTO_TEST_CASE(css_transforms_are_errors) {
   BOOST_TEST(contains(error_of(doc("<path id=\"p\" style=\"fill:none; transform: rotate(10deg)\" d=\"M 0 0 L 1 1\"/>"), "p"),
-                      "line 3, path \"p\": the element has a CSS transform in style=\"fill:none; transform: rotate(10deg)\""));
+                      "line 3, path \"p\": the element has a CSS transform (transform) in style=\"fill:none; transform: rotate(10deg)\""));
   BOOST_TEST(contains(error_of(doc("<g id=\"g\" style=\"Transform:scale(2)\">\n<path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"), "p"),
-                      "line 4, path \"p\": its ancestor line 3, g \"g\" has a CSS transform"));
+                      "line 4, path \"p\": its ancestor line 3, g \"g\" has a CSS transform (transform)"));
   BOOST_TEST(contains(error_of(doc("<style>#p { transform: scale(2) }</style><path id=\"p\" d=\"M 0 0 L 1 1\"/>"), "p"),
-                      "path \"p\": the document's <style> sheet (line 3, <style>) sets a CSS transform"));
+                      "path \"p\": the document's <style> sheet (line 3, <style>) sets a CSS transform (transform)"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" style=\"transform-origin: 5px 5px\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "the element has a CSS transform (transform-origin)"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" transform-origin=\"5 5\" transform=\"rotate(9)\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "line 3, path \"p\": the element has transform-origin=\"5 5\", which rollkin does not apply"));
+  BOOST_TEST(contains(error_of(doc("<switch><path id=\"p\" d=\"M 0 0 L 1 1\"/></switch>"), "p"),
+                      "the element is inside <switch>"));
   // A property that only ends in "transform" is not one.
   BOOST_TEST(error_of(doc("<path id=\"p\" style=\"-inkscape-transform-center:1\" d=\"M 0 0 L 1 1\"/>"), "p").empty());
 }

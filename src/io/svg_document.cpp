@@ -332,16 +332,24 @@ template <class F> void for_each_element(const pugi::xml_node& root, F&& f) {
   }
 }
 
-bool has_css_transform(const std::string& style) {
+/// Whether a CSS declaration list (a style attribute or sheet) sets the property `name` ("transform").
+bool has_css_property(const std::string& style, const std::string& name) {
   std::string s;
   for (char c : style) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (std::size_t p = s.find("transform"); p != std::string::npos; p = s.find("transform", p + 1)) {
-    std::size_t q = p + 9;
+  for (std::size_t p = s.find(name); p != std::string::npos; p = s.find(name, p + 1)) {
+    std::size_t q = p + name.size();
     while (q < s.size() && std::isspace(static_cast<unsigned char>(s[q]))) ++q;
     const bool word_start = p == 0 || !(std::isalnum(static_cast<unsigned char>(s[p - 1])) || s[p - 1] == '-');
     if (word_start && q < s.size() && s[q] == ':') return true;
   }
   return false;
+}
+
+/// The first transform-related CSS property a style sets, or "".
+std::string css_transform_property(const std::string& style) {
+  for (const char* name : {"transform", "transform-origin", "transform-box", "rotate", "scale", "translate"})
+    if (has_css_property(style, name)) return name;
+  return "";
 }
 
 std::string href_of(const pugi::xml_node& use) {
@@ -362,20 +370,27 @@ void check_nothing_ignored(const pugi::xml_node& root, const pugi::xml_node& ele
       where.fail("the element is inside <" + kind + "> (" + element_location(text, n) +
                  "): it is drawn only where it is referenced (e.g. by <use>), which rollkin does not follow; "
                  "move it out of <" + kind + "> or select a drawn element");
+    if (kind == "switch")
+      where.fail("the element is inside <switch> (" + element_location(text, n) +
+                 "): which child is drawn depends on the viewer; take it out of the <switch>");
     if (kind == "svg")
       where.fail("the element is inside a nested <svg> viewport (" + element_location(text, n) +
                  "), which rollkin does not apply; ungroup it in the editor");
-    if (has_css_transform(n.attribute("style").value()))
-      where.fail((n == element ? "the element" : "its ancestor " + element_location(text, n)) +
-                 " has a CSS transform in style=\"" + std::string(n.attribute("style").value()) +
+    const std::string who = n == element ? "the element" : "its ancestor " + element_location(text, n);
+    if (const std::string p = css_transform_property(n.attribute("style").value()); !p.empty())
+      where.fail(who + " has a CSS transform (" + p + ") in style=\"" + std::string(n.attribute("style").value()) +
                  "\", which rollkin does not apply; use the transform attribute instead");
+    for (const char* a : {"transform-origin", "transform-box"})
+      if (n.attribute(a))
+        where.fail(who + " has " + a + "=\"" + n.attribute(a).value() +
+                   "\", which rollkin does not apply; write the transform about the origin instead");
     if (const std::string id = n.attribute("id").value(); !id.empty()) chain_ids.emplace("#" + id, n);
   }
   for_each_element(root, [&](const pugi::xml_node& n) {
     const std::string kind = local_name(n);
-    if (kind == "style" && has_css_transform(n.text().get()))
-      where.fail("the document's <style> sheet (" + element_location(text, n) +
-                 ") sets a CSS transform, which rollkin does not apply; use transform attributes instead");
+    if (kind == "style" && !css_transform_property(n.text().get()).empty())
+      where.fail("the document's <style> sheet (" + element_location(text, n) + ") sets a CSS transform (" +
+                 css_transform_property(n.text().get()) + "), which rollkin does not apply; use transform attributes instead");
     if (kind != "use") return;
     const auto used = chain_ids.find(href_of(n));
     if (used == chain_ids.end()) return;

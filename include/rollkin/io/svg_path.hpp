@@ -27,8 +27,8 @@
 //   5. `scale`.
 // Without width/height (or with percentages) the viewBox only frames the drawing: user units are kept and
 // no unit is declared. Anything that would change the geometry and is not applied is an error naming it:
-// a <use> that references the element or an ancestor, the element inside <defs>/<symbol>, a CSS transform
-// (style attribute or <style> sheet), a transform function not listed above, a nested <svg> viewport, an
+// a <use> that references the element or an ancestor, the element inside <defs>/<symbol>/<switch>, a CSS
+// transform (style attribute or <style> sheet) or transform-origin, a transform function not listed above, a nested <svg> viewport, an
 // element of another kind, a malformed or non-finite number, a degenerate transform, more than one subpath.
 #pragma once
 
