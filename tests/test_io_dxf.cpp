@@ -269,6 +269,10 @@ BOOST_AUTO_TEST_CASE(malformed_text_is_refused_with_its_location) {
   BOOST_TEST(contains(dxf_error(minimal_dxf(lw), "L"), "LWPOLYLINE 4A: group 90 gives a count of 3 vertices but 2 vertices"));
   const std::string huge = "0\nLWPOLYLINE\n5\n4B\n8\nL\n90\n2000000000\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(huge), "L"), "LWPOLYLINE 4B: group 90 count 2000000000 is impossible"));
+  const std::string early_bulge = "0\nLWPOLYLINE\n5\n4C\n8\nL\n90\n2\n42\n1\n10\n0\n20\n0\n10\n1\n20\n0\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(early_bulge), "L"), "LWPOLYLINE 4C: group 42 (bulge) before the first vertex"));
+  const std::string no_count = "0\nLWPOLYLINE\n5\n4D\n8\nL\n10\n0\n20\n0\n10\n1\n20\n0\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(no_count), "L"), "LWPOLYLINE 4D: group 10 (vertex) before the vertex count"));
   const std::string spline = "0\nSPLINE\n5\n5A\n8\nL\n71\n1\n72\n5\n73\n2\n40\n0\n40\n0\n40\n1\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(spline), "L"), "SPLINE 5A: group 72 gives a count of 5 knots but 4 knots"));
 }
@@ -284,6 +288,16 @@ BOOST_AUTO_TEST_CASE(bad_geometry_is_refused_naming_the_entity) {
   BOOST_TEST(contains(dxf_error(minimal_dxf(bad_knots), "L"), "SPLINE 6D is not a valid NURBS curve: NURBS: knots must be non-decreasing"));
   const std::string circle = "0\nCIRCLE\n5\n6E\n8\nL\n10\n5\n20\n0\n40\n1\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(kLine + circle), "L"), "CIRCLE 6E is closed on its own but is not the only entity selected"));
+  const std::string huge_bulge = "0\nLWPOLYLINE\n5\n6G\n8\nL\n90\n2\n10\n0\n20\n0\n42\n1e300\n10\n1\n20\n0\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(huge_bulge), "L"), "LWPOLYLINE 6G at vertex 0: bulge 1e+300 gives no finite arc"));
+  // Angles far outside one turn are reduced, not looped over (a fuzzer's 1e300 degrees must not hang).
+  const std::string far_arc = "0\nARC\n5\n6H\n8\nL\n10\n0\n20\n0\n40\n1\n50\n1e300\n51\n-1e300\n";
+  BOOST_TEST(rollkin::parse_dxf_contour(minimal_dxf(far_arc), DxfSelection{"L", ""}).segments.size() >= 1u);
+  // An ELLIPSE whose end parameter was rounded just past start + 2 pi is still the full ellipse.
+  const std::string rounded = "0\nELLIPSE\n5\n6J\n8\nL\n10\n0\n20\n0\n11\n2\n21\n0\n40\n0.5\n41\n0.5\n42\n6.783185307179587\n";
+  const DxfContour full = rollkin::parse_dxf_contour(minimal_dxf(rounded), DxfSelection{"L", ""});
+  BOOST_TEST(full.closed);
+  BOOST_TEST(full.segments.size() == 4u);
   const std::string zero_line = "0\nLINE\n5\n6F\n8\nL\n10\n1\n20\n1\n11\n1\n21\n1\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(zero_line), "L"), "LINE 6F has zero length"));
 }

@@ -156,6 +156,12 @@ class Collector : public DL_CreationAdapter {
                        e.label() + ": group " + std::to_string(code) + " value \"" + trim(value).substr(0, 40) + "\" is not " +
                            (real_code(code) ? "a finite number" : "an integer"));
     if (in_sequence_) return;  // VERTEX, ATTRIB, SEQEND of a POLYLINE or INSERT: libdxflib reports them
+    // libdxflib stores an LWPOLYLINE's vertices and bulges in an array sized by group 90 and indexed from the
+    // last group 10: a vertex before the count, or a bulge before the first vertex, would be written outside it.
+    if (e.type == "LWPOLYLINE" && (code == 10 || code == 42) && (e.g90 < 0 || (code == 42 && e.n10 == 0)))
+      throw InputError(file_, "line " + std::to_string(line), e.label() + ": group " + std::to_string(code) +
+                                                                  (code == 10 ? " (vertex) before the vertex count (group 90)"
+                                                                              : " (bulge) before the first vertex (group 10)"));
     switch (code) {
       case 5: e.handle = trim(value); break;
       case 8: e.layer = trim(value); break;
@@ -307,7 +313,18 @@ std::vector<Segment> affine_arc(double t0, double t1, const V& c, const V& M, co
   return segs;
 }
 
-bool full_turn(double sweep) { return sweep >= 2 * M_PI * (1 - 1e-12); }
+/// Angles within this fraction of a turn of a whole turn count as a whole turn (rounding of written values).
+constexpr double kTurnTolerance = 1e-12;
+
+bool full_turn(double sweep) { return sweep >= 2 * M_PI * (1 - kTurnTolerance); }
+
+/// Counter-clockwise sweep from `from` to `to`, in (0, turn]: reduced by fmod (no loop, whatever the values);
+/// a sweep of (nearly) zero or a whole turn is a whole turn.
+double ccw_sweep(double from, double to, double turn) {
+  double sweep = std::fmod(to - from, turn);
+  if (sweep <= turn * kTurnTolerance) sweep += turn;
+  return sweep;
+}
 
 class Converter {
  public:
@@ -355,10 +372,9 @@ class Converter {
     if (!(r > 0)) fail(e, "has radius " + number(r) + "; it must be positive");
     double sweep = 2 * M_PI, t0 = 0;
     if (e.type == "ARC") {
-      t0 = deg_to_rad(e.v[4]);
-      double a1 = e.v[5];
-      while (a1 <= e.v[4]) a1 += 360;  // DXF arcs run counter-clockwise from start to end angle
-      sweep = deg_to_rad(a1 - e.v[4]);
+      // DXF arcs run counter-clockwise from the start to the end angle; equal angles make a full circle.
+      t0 = deg_to_rad(std::fmod(e.v[4], 360.0));
+      sweep = deg_to_rad(ccw_sweep(e.v[4], e.v[5], 360.0));
     }
     const double x_sign = mirrored(e) ? -1 : 1;
     piece.segments = affine_arc(t0, t0 + sweep, ocs(e, e.v[0], e.v[1]), V(x_sign * r, 0), V(0, r));
@@ -373,10 +389,9 @@ class Converter {
     if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + number(ratio) + "; it must be in (0, 1]");
     // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1).
     const V m = mirrored(e) ? V(ratio * M.y(), -ratio * M.x()) : V(-ratio * M.y(), ratio * M.x());
-    double t1 = e.v[8];
-    while (t1 <= e.v[7]) t1 += 2 * M_PI;
-    const double sweep = t1 - e.v[7];
-    piece.segments = affine_arc(e.v[7], full_turn(sweep) ? e.v[7] + 2 * M_PI : t1, c, M, m);
+    const double t0 = std::fmod(e.v[7], 2 * M_PI);
+    const double sweep = ccw_sweep(e.v[7], e.v[8], 2 * M_PI);
+    piece.segments = affine_arc(t0, t0 + (full_turn(sweep) ? 2 * M_PI : sweep), c, M, m);
     piece.closed = full_turn(sweep);
   }
 
@@ -386,6 +401,8 @@ class Converter {
     const double angle = 4 * std::atan(bulge);
     const V center = (a + b_) / 2 + perp(V(b_ - a)) * ((1 - bulge * bulge) / (4 * bulge));
     const double r = (a - center).norm(), t0 = std::atan2(a.y() - center.y(), a.x() - center.x());
+    if (!std::isfinite(r) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
+      throw std::range_error("bulge " + number(bulge) + " gives no finite arc");
     std::vector<Segment> segs = BezierPath<double>::circle_arc(center, r, t0, t0 + angle).segments();
     segs.front().points.front() = a;  // the vertices are the data: keep them exact
     segs.back().points.back() = b_;
@@ -419,7 +436,13 @@ class Converter {
       if (bulge == 0) {
         piece.segments.push_back({{a, b}, {}});
       } else {
-        for (Segment& s : bulge_arc(a, b, bulge)) piece.segments.push_back(std::move(s));
+        std::vector<Segment> arc;
+        try {
+          arc = bulge_arc(a, b, bulge);
+        } catch (const std::range_error& ex) {
+          fail(e, std::string("at vertex ") + std::to_string(i) + ": " + ex.what());
+        }
+        for (Segment& s : arc) piece.segments.push_back(std::move(s));
       }
     }
     piece.closed = closed;
