@@ -205,6 +205,7 @@ BOOST_AUTO_TEST_CASE(rational_spline_circle_and_cubic) {
   BOOST_TEST(worst < 1e-14);
   BOOST_TEST(std::abs(path.total_length() - 2 * M_PI * r) < 1e-14 * 2 * M_PI * r);
   check_fixture("splines_mm", "SPLINE_CUBIC");
+  check_fixture("splines_mm", "SPLINE_PERIODIC");
 }
 
 BOOST_AUTO_TEST_CASE(two_span_quadratic_spline_is_the_parabola_in_mm) {

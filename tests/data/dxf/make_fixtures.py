@@ -26,7 +26,9 @@ Files and what each exercises:
                     bulges; all four vertices are corners (the arcs are not tangent to the lines).
   splines_mm.dxf    $INSUNITS 4. SPLINE_CIRCLE: the exact circle as a rational quadratic NURBS (9 control
                     points, weights 1 and sqrt(2)/2, knots 0 0 0 1/4 1/4 1/2 1/2 3/4 3/4 1 1 1), closed.
-                    SPLINE_CUBIC: rational cubic with interior knots (one double). PARABOLA: the paper's
+                    SPLINE_CUBIC: rational cubic with interior knots (one double). SPLINE_PERIODIC: a closed
+                    uniform cubic B-spline as ezdxf writes it (flag closed, 5 points + 3 wrapped, unclamped
+                    knots 0..11; the curve is the part on [u_3, u_8]). PARABOLA: the paper's
                     y = 0.5 x^2, x in [-2, 2], as a 2-span polynomial quadratic B-spline (control points
                     (-2, 2), (-1, 0), (1, 0), (2, 2), knots 0 0 0 1 2 2 2; each span's Bezier points are
                     the parabola's end points and tangent intersection, so it is the parabola exactly).
@@ -39,7 +41,7 @@ import math
 import os
 
 import ezdxf
-from ezdxf.math import Vec3
+from ezdxf.math import Vec3, closed_uniform_bspline
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SAMPLES = 64
@@ -192,9 +194,13 @@ def splines_mm():
                                     dxfattribs={"layer": "SPLINE_CUBIC"})
     parabola = msp.add_open_spline([(-2, 2), (-1, 0), (1, 0), (2, 2)], degree=2, knots=[0, 0, 0, 1, 2, 2, 2],
                                    dxfattribs={"layer": "PARABOLA"})
+    periodic = msp.add_spline(dxfattribs={"layer": "SPLINE_PERIODIC"})
+    periodic.apply_construction_tool(closed_uniform_bspline([(0, 0), (4, 0), (5, 3), (2, 5), (-1, 3)], order=4))
+    periodic.closed = True
     save(doc, "splines_mm")
     answer("splines_mm", "SPLINE_CIRCLE", [circle], [("closed", 1), ("radius", r)])
     answer("splines_mm", "SPLINE_CUBIC", [cubic], [("closed", 0)])
+    answer("splines_mm", "SPLINE_PERIODIC", [periodic], [("closed", 1)])
     answer("splines_mm", "PARABOLA", [parabola], [("closed", 0)])
 
 
