@@ -117,6 +117,14 @@ template <class S> Nurbs<S> unclamped_cubic() {
   return c;
 }
 
+/// Unclamped cubic whose last knot of the range, u_n, is double and followed by larger knots: inserting u_n
+/// must not read knots past the end (found by fuzzing the DXF reader).
+template <class S> Nurbs<S> double_end_knot_cubic() {
+  Nurbs<S> c = unclamped_cubic<S>();
+  c.knots = {S(0), S(1), S(2), S(3), S(4), S(5), S(6), S(7), S(7), S(9), S(10)};
+  return c;
+}
+
 template <class F> std::string invalid_message(F&& make) {
   try {
     rollkin::nurbs_to_bezier(make());
@@ -167,6 +175,7 @@ BOOST_AUTO_TEST_CASE(cubics_match_cox_de_boor_in_double) {
   std::printf("cubic NURBS vs Cox-de Boor (double, 1001 parameters): clamped %.2e, unclamped %.2e\n", clamped, unclamped);
   BOOST_TEST(clamped < 1e-13);
   BOOST_TEST(unclamped < 1e-13);
+  BOOST_TEST(worst_relative_difference(double_end_knot_cubic<double>(), 1000) < 1e-13);
 }
 
 BOOST_AUTO_TEST_CASE(cubics_match_cox_de_boor_in_mpfr) {
@@ -175,6 +184,7 @@ BOOST_AUTO_TEST_CASE(cubics_match_cox_de_boor_in_mpfr) {
   std::printf("cubic NURBS vs Cox-de Boor (MPFR 50 digits): clamped %.2e, unclamped %.2e\n", clamped, unclamped);
   BOOST_TEST(clamped < 1e-45);
   BOOST_TEST(unclamped < 1e-45);
+  BOOST_TEST(worst_relative_difference(double_end_knot_cubic<mpfr50>(), 1000) < 1e-45);
 }
 
 BOOST_AUTO_TEST_CASE(polynomial_curve_gives_polynomial_pieces) {

@@ -79,19 +79,23 @@ template <class S> int knot_multiplicity(const std::vector<S>& knots, const S& v
   return m;
 }
 
-/// Inserts the knot value u once into the homogeneous B-spline (knots U, points Q), eq. 5.15.
+/// Inserts the knot value u once into the homogeneous B-spline (knots U, points Q), eq. 5.15. With k the last
+/// index with U[k] <= u and s the multiplicity u already has, only Q_{k-p+1}..Q_{k-s} are blended (the a_i of
+/// the next s points are 0: they shift), so no knot beyond U[k-s+p] is read; callers insert u in [u_p, u_n]
+/// with s < p, which keeps k - s + p within the knot vector and U[i + p] > U[i] for every blended i.
 template <class S> void insert_knot(int p, std::vector<S>& U, std::vector<Vec3<S>>& Q, const S& u) {
-  // k: the last index with U[k] <= u (callers insert only u < U.back(), so U[k + 1] > u exists).
+  const std::size_t ps = static_cast<std::size_t>(p);
   std::size_t k = 0;
   while (k + 1 < U.size() && U[k + 1] <= u) ++k;
+  const std::size_t s = static_cast<std::size_t>(knot_multiplicity(U, u));
   std::vector<Vec3<S>> R(Q.size() + 1);
-  const std::size_t first = k >= static_cast<std::size_t>(p) ? k - static_cast<std::size_t>(p) + 1 : 0;
+  const std::size_t first = k + 1 - ps;  // k >= p because u >= U[p]
   for (std::size_t i = 0; i < first; ++i) R[i] = Q[i];
-  for (std::size_t i = first; i <= k; ++i) {
-    const S a = (u - U[i]) / (U[i + static_cast<std::size_t>(p)] - U[i]);
+  for (std::size_t i = first; i + s <= k; ++i) {
+    const S a = (u - U[i]) / (U[i + ps] - U[i]);
     R[i] = a * Q[i] + (S(1) - a) * Q[i - 1];
   }
-  for (std::size_t i = k + 1; i < R.size(); ++i) R[i] = Q[i - 1];
+  for (std::size_t i = k + 1 - s; i < R.size(); ++i) R[i] = Q[i - 1];
   U.insert(U.begin() + static_cast<std::ptrdiff_t>(k) + 1, u);
   Q = std::move(R);
 }
