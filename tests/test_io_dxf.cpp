@@ -299,6 +299,9 @@ BOOST_AUTO_TEST_CASE(bad_geometry_is_refused_naming_the_entity) {
   const DxfContour full = rollkin::parse_dxf_contour(minimal_dxf(rounded), DxfSelection{"L", ""});
   BOOST_TEST(full.closed);
   BOOST_TEST(full.segments.size() == 4u);
+  // Two vertices 1e-14 apart in a drawing of size 1: a piece below the join tolerance (found by fuzzing).
+  const std::string tiny = "0\nLWPOLYLINE\n5\n6K\n8\nL\n90\n3\n10\n0\n20\n0\n10\n1\n20\n0\n42\n1\n10\n1\n20\n1e-14\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(tiny), "L"), "LWPOLYLINE 6K has a piece at (1, 0) no longer than the join tolerance"));
   const std::string zero_line = "0\nLINE\n5\n6F\n8\nL\n10\n1\n20\n1\n11\n1\n21\n1\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(zero_line), "L"), "LINE 6F has zero length"));
 }

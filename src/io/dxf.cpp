@@ -403,7 +403,7 @@ class Converter {
     const double r = (a - center).norm(), t0 = std::atan2(a.y() - center.y(), a.x() - center.x());
     if (!std::isfinite(r) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
       throw std::range_error("bulge " + number(bulge) + " gives no finite arc");
-    std::vector<Segment> segs = BezierPath<double>::circle_arc(center, r, t0, t0 + angle).segments();
+    std::vector<Segment> segs = affine_arc(t0, t0 + angle, center, V(r, 0), V(0, r));
     segs.front().points.front() = a;  // the vertices are the data: keep them exact
     segs.back().points.back() = b_;
     return segs;
@@ -495,6 +495,14 @@ class Chainer {
         }
     size_ = (hi - lo).norm();
     tol_ = kDxfJoinTolerance * size_;
+    for (const Piece& p : pieces)
+      for (const Segment& s : p.segments) {
+        double reach = 0;
+        for (const V& q : s.points) reach = std::max(reach, (q - s.points.front()).norm());
+        if (!(reach > tol_))
+          fail(p.label + " has a piece at " + point_text(s.points.front()) + " no longer than the join tolerance (" +
+               tolerance_text() + "): nearly repeated vertices or a vanishing arc");
+      }
   }
 
   double size() const { return size_; }
