@@ -210,6 +210,7 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
 
 void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
   const Mechanism<double>& m = scene.mechanism;
+  for (const std::string& n : scene.notes) std::cout << "contour " << n << "\n";
   std::cout << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
             << fmt(rep.residual, 3) << "\n"
             << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()

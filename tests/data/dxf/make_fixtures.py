@@ -36,6 +36,11 @@ Files and what each exercises:
                     TEXT. INSERT: a LINE and an INSERT of block "B". FITONLY: a SPLINE by fit points only.
                     ORDER: the second LINE meets the first one's start, not its end.
   units_miles.dxf   $INSUNITS 3 (miles): refused.
+  scenes_mm.dxf     $INSUNITS 4, contours of whole scenes (tests/test_io_cad_scenes.cpp), drawn in millimetres for
+                    scenes in metres: PARABOLA_MM the paper's parabola y = 0.5 x^2 (x in metres) as the 2-span
+                    quadratic SPLINE of PARABOLA scaled by 1000; DISK_MM a circle of radius 1000 mm about the
+                    origin made of two bulge-1 arcs (closed LWPOLYLINE); TRACK_MM a LINE from (-10000, 0) to
+                    (10000, 0) mm.
 """
 import math
 import os
@@ -238,6 +243,20 @@ def units_miles():
     answer("units_miles", "L", [line], [("names", "$INSUNITS"), ("names", "unit code 3")], False)
 
 
+def scenes_mm():
+    doc = new_doc("R2010", 4)
+    msp = doc.modelspace()
+    parabola = msp.add_open_spline([(-2000, 2000), (-1000, 0), (1000, 0), (2000, 2000)], degree=2,
+                                   knots=[0, 0, 0, 1, 2, 2, 2], dxfattribs={"layer": "PARABOLA_MM"})
+    disk = msp.add_lwpolyline([(1000, 0, 1), (-1000, 0, 1)], format="xyb", close=True,
+                              dxfattribs={"layer": "DISK_MM"})
+    track = msp.add_line((-10000, 0), (10000, 0), dxfattribs={"layer": "TRACK_MM"})
+    save(doc, "scenes_mm")
+    answer("scenes_mm", "PARABOLA_MM", [parabola], [("closed", 0)])
+    answer("scenes_mm", "DISK_MM", [disk], [("closed", 1), ("radius", 1000)])
+    answer("scenes_mm", "TRACK_MM", [track], [("closed", 0)])
+
+
 if __name__ == "__main__":
     chain_mm()
     polyline_in()
@@ -246,3 +265,4 @@ if __name__ == "__main__":
     splines_mm()
     errors()
     units_miles()
+    scenes_mm()
