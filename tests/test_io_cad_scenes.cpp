@@ -243,3 +243,39 @@ BOOST_AUTO_TEST_CASE(invalid_or_kinked_nurbs_is_an_error_naming_the_json_path) {
   BOOST_TEST(contains(msg, "(1, 1)"));
   BOOST_TEST(contains(msg, "corners are not supported yet as rolling contours"));
 }
+
+// The disk selected by its handle (as ezdxf wrote it, from the fixture's answer file) and doubled by "scale"
+// after the mm -> m conversion: r = 2 m, so psi - psi_0 = -(s - s_0) / 2.
+BOOST_AUTO_TEST_CASE(dxf_disk_by_handle_with_scale_rolls_with_the_scaled_radius) {
+  const std::string answer = read_text(kDxf + "scenes_mm.DISK_MM.txt");
+  const std::string key = "# entities LWPOLYLINE ";
+  const std::size_t at = answer.find(key);
+  BOOST_REQUIRE(at != std::string::npos);
+  const std::string handle = answer.substr(at + key.size(), answer.find('\n', at) - at - key.size());
+  std::string text = read_text(kExamples + "cycloid.json");
+  text = replaced(text, "\"at\": [{\"y\": 1}, {}]", "\"at\": [{\"y\": 2}, {}]");
+  text = replaced(text, "\"type\": \"circle\", \"radius\": 1}",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"handle\": \"" + handle + "\", \"scale\": 2}");
+  const io::Scene s = scene_from("cycloid_dxf_handle.json", text);
+  const auto r = solved(s);
+  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  const double psi0 = r.poses.front().q(turn);
+  double worst = 0;
+  for (const auto& p : r.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) + p.q(travel) / 2));
+  BOOST_TEST_MESSAGE("DXF disk by handle, scale 2: worst " << worst << " rad");
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+BOOST_AUTO_TEST_CASE(svg_id_is_an_alias_of_path_but_not_both) {
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk_alias.svg",
+                                          "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle id=\"d\" r=\"1\"/></svg>\n");
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& keys) {
+    return replaced(base, "\"type\": \"circle\", \"radius\": 1}", "\"type\": \"svg\", \"file\": \"" + svg_file + "\", " + keys + "}");
+  };
+  const io::Scene s = scene_from("alias.json", with("\"id\": \"d\""));
+  BOOST_TEST(s.files_read.back() == svg_file);
+  const std::string msg = input_error_of([&] { scene_from("alias_both.json", with("\"id\": \"d\", \"path\": \"d\"")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].id"));
+  BOOST_TEST(contains(msg, "both"));
+}

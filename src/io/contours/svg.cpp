@@ -36,7 +36,7 @@ ContourShape read_svg_contour(const json& c, const std::string& path, const Cont
   bool closed = false;
   try {
     const SvgShape shape = read_svg_shape(svg, id, opt);
-    ctx.note(shape.file + " \"" + id + "\": " + shape.conversion);
+    ctx.note(shape.conversion);
     closed = shape.closed;
     polygon = control_polygon(shape.segments);
     bezier.emplace(svg_bezier_path(shape));
