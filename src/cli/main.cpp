@@ -68,6 +68,7 @@ const char* kUsage =
     "  --draw FILE.svg  the mechanism at about five poses across the solved range\n"
     "  --rates          add the rate columns to the CSV\n"
     "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
+    "                   and how each imported contour (SVG, DXF) was converted to scene units\n"
     "  --interference   check every solved pose for contours that penetrate or touch at a second point\n"
     "                   (findings on stderr; they make the exit status 1)\n"
     "\n"

@@ -155,7 +155,8 @@ run reference "$EX/paper_fourbar.json" --digits 40 --csv x.csv
 check "reference --digits 40 is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -f x.csv ]; echo $?)
 
 # ---- DXF cam example: a closed SPLINE cam lifting a flat follower ---------------------------------------
-run solve "$EX/dxf_cam.json" --csv cam.csv
+run solve "$EX/dxf_cam.json" --csv cam.csv --verbose
+check "--verbose states the DXF contour's unit conversion" $(grep -q "^contour DXF .*cam_profile.dxf.*SPLINE.*unit mm.*converted mm -> mm" out.txt; echo $?)
 check "dxf_cam.json solves every pose (181 rows)" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' cam.csv)" -eq 181 ]; echo $?)
 # Independent truth: the flat face touches the cam's highest point, so the lift s(phi) is the maximum of
 # x sin(phi) + y cos(phi) over the profile as ezdxf evaluates the SPLINE (dense sampling: error ~1e-8 mm).
