@@ -279,3 +279,29 @@ BOOST_AUTO_TEST_CASE(svg_id_is_an_alias_of_path_but_not_both) {
   BOOST_TEST(contains(msg, "links[2].contours[0].id"));
   BOOST_TEST(contains(msg, "both"));
 }
+
+// Without units.length in the scene the file's numbers are taken as they are (no conversion): the mm disk
+// of the DXF has radius 1000 and the mm SVG circle radius 10, so psi - psi_0 = -(s - s_0) / r with those r.
+BOOST_AUTO_TEST_CASE(without_scene_units_file_numbers_are_kept) {
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk_mm.svg",
+                                          "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" "
+                                          "viewBox=\"0 0 100 100\"><circle id=\"d\" r=\"10\"/></svg>\n");
+  const std::string base = replaced(read_text(kExamples + "cycloid.json"), "\"length\": \"m\", ", "");
+  const std::vector<std::pair<std::string, double>> cases = {
+      {"\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"layer\": \"DISK_MM\", \"parameter\": \"arc_length\"}", 1000.0},
+      {"\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"d\"}", 10.0}};
+  for (const auto& [contour, r] : cases) {
+    std::string text = replaced(base, "\"at\": [{\"y\": 1}, {}]", "\"at\": [{\"y\": " + number(r) + "}, {}]");
+    text = replaced(text, "\"type\": \"circle\", \"radius\": 1}", contour);
+    // Contact guesses for the large disk: its bottom is 3/4 of the circumference from (r, 0).
+    if (r > 100) text = replaced(text, "\"values\": [-90, 0]", "\"values\": [" + number(1.5 * M_PI * r) + ", 10]");
+    const io::Scene s = scene_from("unitless.json", text);
+    BOOST_TEST((s.length == io::LengthUnit::Unitless));
+    const auto res = solved(s);
+    const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+    const double psi0 = res.poses.front().q(turn);
+    double worst = 0;
+    for (const auto& p : res.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) + p.q(travel) / r));
+    BOOST_TEST(worst < 1e-9 * kDeg, contour << ": worst " << worst);
+  }
+}
