@@ -233,6 +233,13 @@ BOOST_AUTO_TEST_CASE(invalid_or_kinked_nurbs_is_an_error_naming_the_json_path) {
                                    "\"points\": [[0, 0], [1, 1]], \"weights\": [1, -1]}"));
   });
   BOOST_TEST(contains(msg, "links[2].contours[0].weights"));
+  // "closed" for a curve that does not return to its start.
+  msg = input_error_of([&] {
+    scene_from("open.json", with("\"type\": \"nurbs\", \"degree\": 2, \"knots\": [0, 0, 0, 1, 1, 1], "
+                                 "\"points\": [[0, 0], [1, 1], [2, 0]], \"closed\": true}"));
+  });
+  BOOST_TEST(contains(msg, "links[2].contours[0].closed"));
+  BOOST_TEST(contains(msg, "not its start"));
   // A degree-1 kink: a polyline corner at (1, 1).
   msg = input_error_of([&] {
     scene_from("kinked.json", with("\"type\": \"nurbs\", \"degree\": 1, \"knots\": [0, 0, 1, 2, 2], "

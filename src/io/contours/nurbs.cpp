@@ -19,6 +19,7 @@ std::vector<double> numbers(const json& v, const std::string& path, const std::s
 
 /// The key of the contour object that an invalid_argument of validate_nurbs / nurbs_to_bezier is about.
 std::string key_of(const std::string& message) {
+  if (message.find("marked closed") != std::string::npos) return "closed";
   if (message.find("weight") != std::string::npos) return "weights";
   if (message.find("knot") != std::string::npos) return "knots";
   if (message.find("control point") != std::string::npos) return "points";
