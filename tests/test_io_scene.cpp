@@ -177,7 +177,7 @@ BOOST_AUTO_TEST_CASE(unknown_types_list_the_allowed_ones) {
   expect_error("pair_type.json", paper_with("\"type\": \"rolling\"", "\"type\": \"rollin\""), "pairs[1].type",
                "\"revolute\", \"prismatic\", \"cam\", \"rolling\"");
   expect_error("contour_type.json", paper_with("\"type\": \"circle\"", "\"type\": \"cirlce\""),
-               "links[2].contours[0].type", "\"line\", \"circle\", \"parabola\", \"ellipse\", \"samples\", \"bezier\", \"svg\"");
+               "links[2].contours[0].type", "\"line\", \"circle\", \"parabola\", \"ellipse\", \"samples\", \"bezier\", \"svg\", \"dxf\", \"nurbs\"");
   expect_error("angle_unit.json", paper_with("\"angle\": \"deg\"", "\"angle\": \"grad\""), "units.angle", "\"deg\" or \"rad\"");
   expect_error("material.json", paper_with("\"material\": \"inside\"", "\"material\": \"inner\""),
                "links[1].contours[0].material", "\"left\", \"right\", \"inside\", \"outside\"");

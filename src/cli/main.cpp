@@ -75,6 +75,7 @@ const char* kUsage =
     "  --draw FILE.svg  the mechanism at about five poses across the solved range\n"
     "  --rates          add the rate columns to the CSV\n"
     "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
+    "                   and how each imported contour (SVG, DXF) was converted to scene units\n"
     "  --interference   check every solved pose for contours that penetrate or touch at a second point\n"
     "                   (findings on stderr; they make the exit status 1)\n"
     "  --max-steps N    refuse (exit 2) a request estimated to need more than N continuation sub-steps\n"
@@ -232,6 +233,7 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
 
 void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
   const Mechanism<double>& m = scene.mechanism;
+  for (const std::string& n : scene.notes) std::cout << "contour " << n << "\n";
   std::cout << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
             << fmt(rep.residual, 3) << "\n"
             << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()

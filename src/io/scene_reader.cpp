@@ -117,7 +117,7 @@ class SceneReader {
     const std::string type = js_.string(js_.require(c, path, "type", "the contour type"), child(path, "type"), "the contour type");
     const ContourReader reader = find_contour_reader(type);
     if (!reader) fail(child(path, "type"), "unknown contour type \"" + type + "\"; expected one of " + quoted_list(contour_types()));
-    const ContourContext ctx(js_, dir_, angle_unit_, scene.length, scene.files_read);
+    const ContourContext ctx(js_, dir_, angle_unit_, scene.length, scene.files_read, scene.notes);
     ContourShape shape = reader(c, path, ctx);
     const std::string nm = js_.name(js_.require(c, path, "name", "the contour's name"), child(path, "name"), "contour name");
     if (!names.insert(nm).second) fail(child(path, "name"), "duplicate contour name \"" + nm + "\" on link \"" + link_name + "\"");

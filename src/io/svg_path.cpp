@@ -1,14 +1,14 @@
 #include "rollkin/io/svg_path.hpp"
 
+#include "svg_detail.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <optional>
 
 namespace rollkin {
 namespace {
@@ -40,15 +40,17 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   const P half = (a.from - a.to) / 2;
   const double x1 = c * half.x() + s * half.y(), y1 = -s * half.x() + c * half.y();
   // F.6.6.2-3: radii too small to span the chord are scaled up uniformly.
+  // Scaled up, the radii span the chord exactly: the centre is the chord's midpoint (k = 0 below), which
+  // F.6.5.2 would only reach through sqrt(round-off), an error of sqrt(eps) in the centre.
   const double lambda = x1 * x1 / (rx * rx) + y1 * y1 / (ry * ry);
-  if (lambda > 1) {
+  if (lambda >= 1) {
     rx *= std::sqrt(lambda);
     ry *= std::sqrt(lambda);
   }
   // F.6.5.2: centre in the ellipse's axes; the sign picks one of the two candidate centres.
   const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
   const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-  double k = std::sqrt(std::max(0.0, num / den));
+  double k = lambda >= 1 ? 0.0 : std::sqrt(std::max(0.0, num / den));
   if (a.large_arc == a.sweep) k = -k;
   const double cx1 = k * rx * y1 / ry, cy1 = -k * ry * x1 / rx;
   // F.6.5.3: centre in user space.
@@ -81,7 +83,9 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
 
 class PathDataParser {
  public:
-  PathDataParser(const std::string& d, const std::string& file, const std::string& id) : d_(d), file_(file), id_(id) {}
+  /// `context` names the path in messages ("path \"cam\"" or "line 12, path \"cam\"").
+  PathDataParser(const std::string& d, const std::string& file, const std::string& context)
+      : d_(d), file_(file), context_(context) {}
 
   std::vector<SvgSubpath> parse() {
     skip_separators();
@@ -94,10 +98,14 @@ class PathDataParser {
       if (at_end()) break;
       const char c = d_[pos_];
       if (std::isalpha(static_cast<unsigned char>(c))) {
+        ++command_index_;
+        letter_ = c;
+        set_ = 1;
         if (!std::strchr("MmLlHhVvCcSsQqTtAaZz", c)) fail(std::string("unknown path command '") + c + "'");
         command = c;
         ++pos_;
       } else if (starts_number() && command != 0 && command != 'Z' && command != 'z') {
+        ++set_;
         if (command == 'M') command = 'L';  // extra pairs after a moveto are implicit line-tos
         if (command == 'm') command = 'l';
       } else {
@@ -106,59 +114,52 @@ class PathDataParser {
       execute(command);
     }
     std::vector<SvgSubpath> out;
-    for (auto& s : subpaths_)
+    for (auto& s : subpaths_) {
+      svg_detail::drop_degenerate_segments(s);
       if (!s.segments.empty()) out.push_back(std::move(s));
+    }
     return out;
   }
 
  private:
   bool at_end() const { return pos_ >= d_.size(); }
   void skip_separators() {
-    while (!at_end() && (std::isspace(static_cast<unsigned char>(d_[pos_])) || d_[pos_] == ',')) ++pos_;
+    while (!at_end() && svg_detail::is_separator(d_[pos_])) ++pos_;
   }
   bool starts_number() const {
     const char c = d_[pos_];
     return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.';
   }
 
+  /// "command 7 (C)", or "command 7 (C, set 2)" for a coordinate set repeated without its letter.
+  std::string command_name() const {
+    std::string s = "command " + std::to_string(command_index_) + " (" + std::string(1, letter_);
+    if (set_ > 1) s += ", set " + std::to_string(set_);
+    return s + ")";
+  }
+
   [[noreturn]] void fail(const std::string& message) const {
-    std::string location = id_.empty() ? "" : "path \"" + id_ + "\", ";
+    std::string location = context_.empty() ? "" : context_ + ", ";
+    if (command_index_ > 0) location += command_name() + ", ";
     throw InputError(file_, location + "d offset " + std::to_string(pos_), message);
   }
 
-  /// SVG number: sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
   double number(char command, int argument, int count) {
     skip_separators();
     const std::size_t start = pos_;
-    auto digits = [&] {
-      const std::size_t from = pos_;
-      while (!at_end() && std::isdigit(static_cast<unsigned char>(d_[pos_]))) ++pos_;
-      return pos_ > from;
-    };
-    if (!at_end() && (d_[pos_] == '+' || d_[pos_] == '-')) ++pos_;
-    bool any = digits();
-    if (!at_end() && d_[pos_] == '.') {
-      ++pos_;
-      any = digits() || any;
-    }
-    if (!any) {
-      pos_ = start;
-      fail(std::string("expected a number (argument ") + std::to_string(argument) + " of " + std::to_string(count) +
-           " of the '" + command + "' command), got " + (at_end() ? "the end of the data" : "'" + std::string(1, d_[pos_]) + "'"));
-    }
-    if (!at_end() && (d_[pos_] == 'e' || d_[pos_] == 'E')) {
-      const std::size_t mark = pos_++;
-      if (!at_end() && (d_[pos_] == '+' || d_[pos_] == '-')) ++pos_;
-      if (!digits()) pos_ = mark;  // not an exponent after all
-    }
-    const char* first = d_.data() + start + (d_[start] == '+' ? 1 : 0);
     double value = 0;
-    const auto [end, ec] = std::from_chars(first, d_.data() + pos_, value);
-    if (ec != std::errc() || end != d_.data() + pos_ || !std::isfinite(value)) {
-      pos_ = start;
-      fail("number out of range");
+    switch (svg_detail::scan_number(d_, pos_, value)) {
+      case svg_detail::NumberScan::ok:
+        return value;
+      case svg_detail::NumberScan::out_of_range:
+        pos_ = start;
+        fail("number " + d_.substr(start, 40) + " out of range (not a finite double)");
+      case svg_detail::NumberScan::none:
+        break;
     }
-    return value;
+    fail(std::string("expected a number (argument ") + std::to_string(argument) + " of " + std::to_string(count) +
+         " of the '" + command + "' command), got " +
+         (at_end() ? "the end of the data" : "'" + std::string(1, d_[pos_]) + "'"));
   }
 
   bool flag(char command, int argument) {
@@ -176,6 +177,10 @@ class PathDataParser {
   }
 
   void add(Segment s) {
+    for (const P& q : s.points)
+      if (!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        fail("the coordinates overflow (relative moves add up beyond the largest double); expected the "
+             "coordinates of a drawing");
     bool degenerate = true;
     for (const P& q : s.points) degenerate = degenerate && q == s.points.front();
     if (degenerate) return;
@@ -185,6 +190,7 @@ class PathDataParser {
     }
     current_ = s.points.back();
     subpaths_.back().segments.push_back(std::move(s));
+    subpaths_.back().origins.push_back(command_name());
   }
 
   void execute(char command) {
@@ -262,8 +268,10 @@ class PathDataParser {
 
   const std::string& d_;
   const std::string& file_;
-  const std::string& id_;
+  const std::string& context_;
   std::size_t pos_ = 0;
+  int command_index_ = 0, set_ = 0;  // the user's numbering: k-th command letter, coordinate set within it
+  char letter_ = 0;
   std::vector<SvgSubpath> subpaths_;
   bool need_subpath_ = true;
   P current_ = P::Zero(), start_ = P::Zero();
@@ -278,102 +286,88 @@ void map_points(std::vector<SvgSubpath>& subpaths, const SvgPathOptions& o) {
       for (auto& p : seg.points) p = P(p.x() * o.scale, p.y() * sy);
 }
 
-// ---- SVG file scanning --------------------------------------------------------------------------------
-
-std::size_t line_of(const std::string& text, std::size_t pos) {
-  return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
-}
-
-/// Attributes of the tag whose name ends at `pos` (name="value" or name='value'), up to '>'.
-std::map<std::string, std::string> tag_attributes(const std::string& text, std::size_t pos, const std::string& file) {
-  std::map<std::string, std::string> attrs;
-  auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_:.-", c); };
-  while (pos < text.size()) {
-    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
-    if (pos >= text.size() || text[pos] == '>' || text[pos] == '/') return attrs;
-    const std::size_t name_start = pos;
-    while (pos < text.size() && name_char(text[pos])) ++pos;
-    const std::string name = text.substr(name_start, pos - name_start);
-    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
-    if (name.empty() || pos >= text.size() || text[pos] != '=')
-      throw InputError(file, "line " + std::to_string(line_of(text, pos)), "malformed attribute in a <path> tag");
-    ++pos;
-    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
-    const char quote = pos < text.size() ? text[pos] : 0;
-    const std::size_t close = (quote == '"' || quote == '\'') ? text.find(quote, pos + 1) : std::string::npos;
-    if (close == std::string::npos)
-      throw InputError(file, "line " + std::to_string(line_of(text, pos)),
-                       "attribute " + name + " of a <path> tag has no quoted value");
-    attrs[name] = text.substr(pos + 1, close - pos - 1);
-    pos = close + 1;
-  }
-  return attrs;
-}
-
-/// Skips comments, CDATA, processing instructions and declarations starting at `pos` ('<').
-std::size_t skip_markup(const std::string& text, std::size_t pos) {
-  static const std::pair<const char*, const char*> blocks[] = {{"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}, {"<!", ">"}};
-  for (const auto& [open, close] : blocks)
-    if (text.compare(pos, std::strlen(open), open) == 0) {
-      const std::size_t end = text.find(close, pos);
-      return end == std::string::npos ? text.size() : end + std::strlen(close);
-    }
-  return pos;
-}
-
 }  // namespace
+
+namespace svg_detail {
+
+bool is_separator(char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ','; }
+
+NumberScan scan_number(const std::string& s, std::size_t& pos, double& value) {
+  const std::size_t start = pos;
+  std::size_t i = pos;
+  auto digits = [&] {
+    const std::size_t from = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    return i > from;
+  };
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  bool any = digits();
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    any = digits() || any;
+  }
+  if (!any) return NumberScan::none;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    const std::size_t mark = i++;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    if (!digits()) i = mark;  // not an exponent after all ("1em", or "1e" before a command)
+  }
+  pos = i;
+  const char* first = s.data() + start + (s[start] == '+' ? 1 : 0);
+  const auto [end, ec] = std::from_chars(first, s.data() + i, value);
+  if (ec != std::errc() || end != s.data() + i || !std::isfinite(value)) return NumberScan::out_of_range;
+  return NumberScan::ok;
+}
+
+double control_extent(const std::vector<BezierSegment<double>>& segments) {
+  if (segments.empty()) return 0;
+  P lo = segments[0].points[0], hi = lo;
+  for (const auto& s : segments)
+    for (const auto& p : s.points) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  return (hi - lo).norm();
+}
+
+void drop_degenerate_segments(SvgSubpath& sub) {
+  const double tol = BezierPathOptions<double>{}.joint_tolerance * control_extent(sub.segments);
+  if (!std::isfinite(tol)) return;  // an overflowing shape is refused by the caller, with its own message
+  std::vector<Segment> kept;
+  std::vector<std::string> origins;
+  std::optional<P> pending_start;  // the start of dropped leading pieces, for the first kept segment
+  for (std::size_t i = 0; i < sub.segments.size(); ++i) {
+    Segment& s = sub.segments[i];
+    bool degenerate = true;
+    for (const P& q : s.points) degenerate = degenerate && (q - s.points.front()).norm() <= tol;
+    if (!degenerate) {
+      if (pending_start) s.points.front() = *pending_start;
+      pending_start.reset();
+      kept.push_back(std::move(s));
+      origins.push_back(i < sub.origins.size() ? sub.origins[i] : "");
+    } else if (!kept.empty()) {
+      kept.back().points.back() = s.points.back();
+    } else if (!pending_start) {
+      pending_start = s.points.front();
+    }
+  }
+  sub.segments = std::move(kept);
+  sub.origins = std::move(origins);
+}
+
+}  // namespace svg_detail
 
 std::vector<SvgSubpath> parse_svg_path_data(const std::string& d, const SvgPathOptions& options, const std::string& file,
                                             const std::string& path_id) {
-  std::vector<SvgSubpath> subpaths = PathDataParser(d, file, path_id).parse();
+  const std::string context = path_id.empty() ? "" : "path \"" + path_id + "\"";
+  std::vector<SvgSubpath> subpaths = PathDataParser(d, file, context).parse();
   map_points(subpaths, options);
   return subpaths;
 }
 
-std::string read_svg_path_data(const std::string& svg_file, const std::string& path_id) {
-  std::ifstream in(svg_file, std::ios::binary);
-  if (!in) throw InputError(svg_file, "", std::string("cannot open the SVG file: ") + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  std::vector<std::string> ids;
-  for (std::size_t pos = text.find('<'); pos != std::string::npos; pos = text.find('<', pos + 1)) {
-    const std::size_t after = skip_markup(text, pos);
-    if (after != pos) {
-      pos = after - 1;
-      continue;
-    }
-    std::size_t name_end = pos + 1;
-    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) || text[name_end] == ':'))
-      ++name_end;
-    const std::string name = text.substr(pos + 1, name_end - pos - 1);
-    if (name != "path" && (name.size() < 5 || name.compare(name.size() - 5, 5, ":path") != 0)) continue;
-    const auto attrs = tag_attributes(text, name_end, svg_file);
-    const auto id = attrs.find("id");
-    if (id == attrs.end()) continue;
-    if (id->second != path_id) {
-      ids.push_back(id->second);
-      continue;
-    }
-    const std::string where = "line " + std::to_string(line_of(text, pos));
-    if (const auto t = attrs.find("transform"); t != attrs.end())
-      throw InputError(svg_file, where,
-                       "path \"" + path_id + "\" has transform=\"" + t->second +
-                           "\", which rollkin does not apply (transforms are not supported); apply it to the path "
-                           "data in the editor first, or remove it");
-    const auto d = attrs.find("d");
-    if (d == attrs.end()) throw InputError(svg_file, where, "path \"" + path_id + "\" has no d attribute");
-    return d->second;
-  }
-  std::string known;
-  for (const auto& i : ids) known += (known.empty() ? "" : ", ") + i;
-  throw InputError(svg_file, "", "no <path> element with id=\"" + path_id + "\"" +
-                                     (known.empty() ? " (the file has no <path> with an id)" : "; path ids found: " + known));
-}
-
-std::vector<SvgSubpath> read_svg_path(const std::string& svg_file, const std::string& path_id,
-                                      const SvgPathOptions& options) {
-  return parse_svg_path_data(read_svg_path_data(svg_file, path_id), options, svg_file, path_id);
+std::vector<SvgSubpath> svg_detail::parse_path_data(const std::string& d, const std::string& file,
+                                                    const std::string& context) {
+  return PathDataParser(d, file, context).parse();
 }
 
 }  // namespace rollkin

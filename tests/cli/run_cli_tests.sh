@@ -335,6 +335,23 @@ for ex in paper_fourbar elliptical_gears_cam hypocycloid cycloid; do
       $([ "$rc" -eq 2 ] && grep -q "scene.json" err.txt && cmp -s truncated/keep.csv keep.orig && [ "$(ls -A truncated)" = "$before" ]; echo $?)
   done
 done
+# ---- DXF cam example: a closed SPLINE cam lifting a flat follower ---------------------------------------
+run solve "$EX/dxf_cam.json" --csv cam.csv --verbose
+check "--verbose states the DXF contour's unit conversion" $(grep -q "^contour DXF .*cam_profile.dxf.*SPLINE.*unit mm.*converted mm -> mm" out.txt; echo $?)
+check "dxf_cam.json solves every pose (181 rows)" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' cam.csv)" -eq 181 ]; echo $?)
+# Independent truth: the flat face touches the cam's highest point, so the lift s(phi) is the maximum of
+# x sin(phi) + y cos(phi) over the profile as ezdxf evaluates the SPLINE (dense sampling: error ~1e-8 mm).
+check "dxf_cam lift equals the profile's support function by ezdxf (1e-6 mm)" $(/usr/bin/python3 - "$SRC/shapes/cam_profile.dxf" cam.csv <<'PY' >/dev/null 2>&1; echo $?
+import csv, math, sys
+import ezdxf
+pts = list(ezdxf.readfile(sys.argv[1]).modelspace().query("SPLINE")[0].construction_tool().approximate(segments=50000))
+worst = 0
+for row in list(csv.DictReader(open(sys.argv[2])))[::30]:
+    phi = math.radians(float(row["O.phi"]))
+    worst = max(worst, abs(max(p.x * math.sin(phi) + p.y * math.cos(phi) for p in pts) - float(row["S.s"])))
+sys.exit(0 if worst < 1e-6 else 1)
+PY
+)
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

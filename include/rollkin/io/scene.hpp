@@ -41,6 +41,7 @@ struct Scene {
   AngleUnit angle_unit = AngleUnit::Degree;  // units.angle: the unit of every angle in the file
   std::vector<std::string> inputs;   // full names of the drivers, in "inputs" order
   std::vector<std::string> files_read;  // every contour file read (point files, SVG), as opened
+  std::vector<std::string> notes;       // one line per imported contour (SVG, DXF): its unit conversion (--verbose)
 
   /// Internal units per file unit of variable i: radians_per(angle_unit) for angles (pi/180 in a "deg"
   /// file), else 1.

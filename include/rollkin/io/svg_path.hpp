@@ -1,25 +1,41 @@
-// SVG path data (the `d` attribute) as Bezier segments for BezierPath<double>.
+// SVG input: path data (the `d` attribute) and whole SVG documents, as exact Bezier segments.
 //
-// All commands of SVG 1.1 section 8.3 are read, absolute and relative: M L H V C S Q T A Z, with implicit
-// repetition (extra coordinate pairs after M are line-tos), compact numbers ("-.5.5", "1e-3") and compact
-// arc flags ("a1 1 0 01 1 1"). Lines become degree-1 segments, C/S cubic and Q/T quadratic ones, and
+// Path data: all commands of SVG 1.1 section 8.3 are read, absolute and relative: M L H V C S Q T A Z, with
+// implicit repetition (extra coordinate pairs after M are line-tos), compact numbers ("-.5.5", "1e-3") and
+// compact arc flags ("a1 1 0 01 1 1"). Lines become degree-1 segments, C/S cubic and Q/T quadratic ones, and
 // elliptical arcs (A) are converted exactly to rational quadratics of at most 90 degrees each, by the
-// endpoint-to-centre conversion of the SVG implementation notes (F.6.5, with the radii correction of
-// F.6.6 when the radii are too small). Zero-length pieces are dropped; Z closes the subpath (adding the
-// closing line when needed) and marks it closed.
+// endpoint-to-centre conversion of the SVG implementation notes (F.6.5, with the radii correction of F.6.6
+// when the radii are too small). Zero-length pieces are dropped; a piece whose control points all lie
+// within round-off (sqrt(eps) of the subpath's size, the joint tolerance of BezierPath) of its start is
+// dropped too and its neighbour snapped to its end, so that a path closed by Z after a last point equal to
+// the first (to round-off) has no degenerate closing segment. Z closes the subpath and marks it closed.
+// Commands are numbered as the user counts them: the k-th command letter of `d` is "command k (L)";
+// coordinate sets repeated without a letter are "command k (L, set 2)".
 //
-// Coordinates: SVG's y axis points down. With flip_y (the default) every point becomes (x, -y) so that
-// the drawing looks the same in rollkin's y-up world. Mirroring reverses the sense of rotation: a path
-// drawn clockwise on screen is counter-clockwise after the flip (material on the left means the inside
-// of a clockwise-on-screen outline). `scale` multiplies all coordinates (drawing units -> scene units).
-//
-// Transforms are not applied: a `transform` attribute on the chosen <path> is an error (flatten it in the
-// editor first); transforms on enclosing groups are not detected.
+// Documents (read_svg_shape): parsed with pugixml. One element is selected by id: <path>, <circle>,
+// <ellipse>, <rect> (rx/ry rounded corners), <line>, <polyline>, <polygon>; circles, ellipses and rounded
+// corners are quarter arcs, rational quadratics of middle weight cos(45 deg), starting at (cx + r, cy) as SVG 2
+// (10.3-10.5) draws them. The map from the element's coordinates to scene coordinates is, in this order
+// (each an affine map, so rational Bezier control points are mapped exactly and the weights kept):
+//   1. the element's `transform`, then each ancestor group's, innermost first (SVG 1.1, 7.5);
+//   2. the root <svg>'s viewBox with width/height and preserveAspectRatio (SVG 1.1, 7.7-7.8), giving
+//      viewport coordinates in the unit of `width` (mm, cm, in, pt, pc, px = 1/96 in, or no unit);
+//   3. flip_y: (x, y) -> (x, -y), SVG's y-down drawing becoming rollkin's y-up world (this reverses the sense
+//      of rotation: a path drawn clockwise on screen is counter-clockwise after the flip);
+//   4. unit conversion: when the file declares physical units (width and height with units) and the scene
+//      declares units.length, viewport units are converted to scene units; otherwise numbers stay as they are;
+//   5. `scale`.
+// Without width/height (or with percentages) the viewBox only frames the drawing: user units are kept and
+// no unit is declared. Anything that would change the geometry and is not applied is an error naming it:
+// a <use> that references the element or an ancestor, the element inside <defs>/<symbol>/<switch>, a CSS
+// transform (style attribute or <style> sheet) or transform-origin, a transform function not listed above, a nested <svg> viewport, an
+// element of another kind, a malformed or non-finite number, a degenerate transform, more than one subpath.
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/profile/bezier.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,18 +49,62 @@ struct SvgPathOptions {
 /// One subpath: the segments between a moveto and the next moveto (or the end).
 struct SvgSubpath {
   std::vector<BezierSegment<double>> segments;
-  bool closed = false;  // ended by Z
+  bool closed = false;               // ended by Z
+  std::vector<std::string> origins;  // per segment, in the user's numbering: "command 7 (C)"
 };
 
 /// Parses path data. `file` and `path_id` only name the source in InputError messages, whose location is
-/// the character offset in `d`.
+/// the command (index and letter) and the character offset in `d`.
 std::vector<SvgSubpath> parse_svg_path_data(const std::string& d, const SvgPathOptions& options = {},
                                             const std::string& file = "", const std::string& path_id = "");
 
-/// The `d` attribute of the <path> element with the given id in an SVG file.
-std::string read_svg_path_data(const std::string& svg_file, const std::string& path_id);
+// ---- documents ------------------------------------------------------------------------------------------
 
-/// read_svg_path_data + parse_svg_path_data.
+struct SvgReadOptions {
+  bool flip_y = true;  // step 3 above
+  double scale = 1.0;  // step 5 above
+  /// The scene's units.length as metres per scene unit; empty when the scene declares no length unit.
+  std::optional<double> metres_per_scene_unit;
+  /// Tangent turn (radians) above which a joint is reported as a corner; BezierPath's default.
+  double corner_tolerance = BezierPathOptions<double>{}.corner_tolerance;
+};
+
+/// A tangent discontinuity at the start of `segment` (for a closed shape, segment 0 is the closing joint).
+struct SvgCorner {
+  std::size_t segment = 0;
+  Vec2<double> point;   // in scene units
+  double turn_deg = 0;  // signed tangent turn, in the scene's (flipped) orientation
+  std::string where;    // in the user's terms: "where command 3 (L) meets command 4 (C)"
+};
+
+/// One element of an SVG document as Bezier segments in scene units.
+struct SvgShape {
+  std::string file;                                 // the file label given
+  std::string id, element;                          // element id and kind ("path", "circle", ...)
+  std::string location;                             // "line 12, path \"cam\"": prefix for later messages
+  std::vector<BezierSegment<double>> segments;      // in scene units
+  std::vector<std::string> origins;                 // per segment, in the user's terms
+  bool closed = false;
+  std::vector<SvgCorner> corners;                   // tangent discontinuities at joints, in path order
+  /// Metres per viewport unit (step 2) when the file declares physical units, otherwise empty.
+  std::optional<double> metres_per_file_unit;
+  std::string file_unit;                            // "mm", "px", ... or "user unit" when none is declared
+  double unit_factor = 1.0;                         // file units -> scene units applied in step 4
+  std::string conversion;                           // one line describing steps 1-5, for --verbose
+};
+
+/// Reads the element with the given id from an SVG file and maps it into scene units (steps 1-5).
+SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, const SvgReadOptions& options = {});
+
+/// The same from the document's text (bytes); `file_label` names the source in messages.
+SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id, const SvgReadOptions& options = {},
+                                  const std::string& file_label = "");
+
+/// The shape as a contour. A corner (rolling needs a continuous tangent) or any other defect BezierPath
+/// refuses is an InputError naming the file, the element and the place in the user's terms.
+BezierPath<double> svg_bezier_path(const SvgShape& shape);
+
+/// Compatibility: read_svg_shape without scene units, as one subpath.
 std::vector<SvgSubpath> read_svg_path(const std::string& svg_file, const std::string& path_id,
                                       const SvgPathOptions& options = {});
 

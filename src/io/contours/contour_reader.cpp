@@ -87,6 +87,24 @@ ProfileShape<double> ContourContext::parameterised(ProfileShape<double> shape, c
   return ArcLengthProfile<double>(std::get<BezierPath<double>>(shape));
 }
 
+double ContourContext::scale(const json& c, const std::string& path) const {
+  const double s = js.number_or(c, path, "scale", 1.0, "a scale factor");
+  if (!(s > 0) || !std::isfinite(s)) js.fail(child(path, "scale"), "expected a positive finite scale factor, got " + fmt(s));
+  return s;
+}
+
+double ContourContext::unit_factor(double file_metres_per_unit) const {
+  if (!(file_metres_per_unit > 0) || length_unit_ == LengthUnit::Unitless) return 1;
+  return file_metres_per_unit / metres_per(length_unit_);
+}
+
+std::vector<Vec2<double>> control_polygon(const std::vector<BezierSegment<double>>& segments) {
+  std::vector<Vec2<double>> polygon;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    for (std::size_t k = (i == 0 ? 0 : 1); k < segments[i].points.size(); ++k) polygon.push_back(segments[i].points[k]);
+  return polygon;
+}
+
 double signed_area(const std::vector<Vec2<double>>& pts) {
   double a = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) a += cross2<double>(pts[i], pts[(i + 1) % pts.size()]);

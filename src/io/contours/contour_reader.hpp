@@ -22,8 +22,13 @@ namespace rollkin::io {
 class ContourContext {
  public:
   ContourContext(const JsonAccess& access, std::filesystem::path scene_dir, AngleUnit angle_unit, LengthUnit length_unit,
-                 std::vector<std::string>& files_read)
-      : js(access), dir_(std::move(scene_dir)), angle_unit_(angle_unit), length_unit_(length_unit), files_read_(files_read) {}
+                 std::vector<std::string>& files_read, std::vector<std::string>& notes)
+      : js(access),
+        dir_(std::move(scene_dir)),
+        angle_unit_(angle_unit),
+        length_unit_(length_unit),
+        files_read_(files_read),
+        notes_(notes) {}
 
   const JsonAccess& js;
 
@@ -32,6 +37,14 @@ class ContourContext {
   /// The scene's length unit (units.length; Unitless when not given). A contour file that declares its
   /// unit converts its coordinates by length_factor(file unit, length_unit()) (io/units.hpp).
   LengthUnit length_unit() const { return length_unit_; }
+
+  /// A line for --verbose (Scene::notes): how an imported contour was converted.
+  void note(const std::string& line) const { notes_.push_back(line); }
+  /// "scale" of an imported contour: a positive factor applied after the unit conversion, 1 when absent.
+  double scale(const json& c, const std::string& path) const;
+  /// Converts a file's coordinates to scene units: length_factor(file unit, units.length), 1 when either
+  /// is unitless; file_metres_per_unit is 0 (or empty) for a file without a declared unit.
+  double unit_factor(double file_metres_per_unit) const;
 
   /// Checks that the contour object has only the keys common to all contours and `extra`.
   void keys(const json& c, const std::string& path, std::vector<std::string> extra) const;
@@ -51,6 +64,7 @@ class ContourContext {
   AngleUnit angle_unit_;
   LengthUnit length_unit_;
   std::vector<std::string>& files_read_;
+  std::vector<std::string>& notes_;
 };
 
 /// A contour's profile and material side (reversed: the material is on the right of the profile's
@@ -72,6 +86,9 @@ struct ContourKind {
 ContourReader find_contour_reader(const std::string& type);
 /// The known types, in the order of the registry (for the "unknown contour type" message).
 std::vector<std::string> contour_types();
+
+/// The control points of end-to-end segments, each joint once (for the orientation by signed_area).
+std::vector<Vec2<double>> control_polygon(const std::vector<BezierSegment<double>>& segments);
 
 /// Signed area of the polygon through pts (shoelace), > 0 counter-clockwise.
 double signed_area(const std::vector<Vec2<double>>& pts);

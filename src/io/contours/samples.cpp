@@ -17,8 +17,7 @@ ContourShape read_samples_contour(const json& c, const std::string& path, const 
   const JsonAccess& js = ctx.js;
   ctx.keys(c, path, {"file", "points", "closed", "smoothing", "scale", "parameter"});
   const bool closed = js.get(c, "closed") ? js.boolean(c["closed"], child(path, "closed"), "whether the contour is closed") : false;
-  const double scale = js.number_or(c, path, "scale", 1.0, "a scale factor");
-  if (!(scale > 0)) js.fail(child(path, "scale"), "expected a positive scale factor, got " + fmt(scale));
+  const double scale = ctx.scale(c, path);
   const double smoothing = js.number_or(c, path, "smoothing", 0.0, "a smoothing tolerance");
   if (smoothing < 0) js.fail(child(path, "smoothing"), "expected a smoothing tolerance >= 0, got " + fmt(smoothing));
   const json* f = js.get(c, "file");

@@ -1,37 +1,47 @@
-// "svg" contours: one <path> of an SVG file, read by read_svg_path (docs/scene_format.md).
+// "svg" contours: one element of an SVG file selected by id, read by read_svg_shape (io/svg_path.hpp) with
+// the scene's length unit, then made a BezierPath (docs/scene_format.md, "svg").
 #include "contour_reader.hpp"
 
 #include "rollkin/io/svg_path.hpp"
 
 namespace rollkin::io {
 
+namespace {
+
+/// The element id: "path" (or its alias "id"), exactly one of the two.
+std::string element_id(const json& c, const std::string& path, const JsonAccess& js) {
+  const json* p = js.get(c, "path");
+  const json* i = js.get(c, "id");
+  if (p && i) js.fail(child(path, "id"), "give the element id once: \"path\" and its alias \"id\" are both present");
+  if (!p && !i) js.fail(path, "missing key \"path\": expected the id of the SVG element (path, circle, ellipse, rect, line, polyline, polygon)");
+  const std::string key = p ? "path" : "id";
+  const std::string id = js.string(p ? *p : *i, child(path, key), "an element id");
+  if (id.empty()) js.fail(child(path, key), "expected an element id, got an empty string");
+  return id;
+}
+
+}  // namespace
+
 ContourShape read_svg_contour(const json& c, const std::string& path, const ContourContext& ctx) {
   const JsonAccess& js = ctx.js;
-  ctx.keys(c, path, {"file", "path", "flip_y", "scale", "parameter"});
+  ctx.keys(c, path, {"file", "path", "id", "flip_y", "scale", "parameter"});
   const std::string svg = ctx.contour_file(js.require(c, path, "file", "the SVG file"), child(path, "file"));
-  const std::string id = js.string(js.require(c, path, "path", "the id of the <path> element"), child(path, "path"), "a path id");
-  SvgPathOptions opt;
+  const std::string id = element_id(c, path, js);
+  SvgReadOptions opt;
   if (const json* fy = js.get(c, "flip_y")) opt.flip_y = js.boolean(*fy, child(path, "flip_y"), "whether to flip y");
-  opt.scale = js.number_or(c, path, "scale", 1.0, "a scale factor");
-  if (!(opt.scale > 0)) js.fail(child(path, "scale"), "expected a positive scale factor, got " + fmt(opt.scale));
-  std::vector<SvgSubpath> subs;
+  opt.scale = ctx.scale(c, path);
+  if (ctx.length_unit() != LengthUnit::Unitless) opt.metres_per_scene_unit = metres_per(ctx.length_unit());
+  std::optional<BezierPath<double>> bezier;
+  std::vector<Vec2<double>> polygon;
+  bool closed = false;
   try {
-    subs = read_svg_path(svg, id, opt);
+    const SvgShape shape = read_svg_shape(svg, id, opt);
+    ctx.note(shape.conversion);
+    closed = shape.closed;
+    polygon = control_polygon(shape.segments);
+    bezier.emplace(svg_bezier_path(shape));
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
-  }
-  if (subs.size() != 1)
-    js.fail(child(path, "path"), "the SVG path \"" + id + "\" in " + svg + " has " + std::to_string(subs.size()) +
-                                     " subpaths; expected exactly one (one contour per path)");
-  std::vector<Vec2<double>> polygon;
-  for (std::size_t i = 0; i < subs[0].segments.size(); ++i)
-    for (std::size_t k = (i == 0 ? 0 : 1); k < subs[0].segments[i].points.size(); ++k) polygon.push_back(subs[0].segments[i].points[k]);
-  const bool closed = subs[0].closed;
-  std::optional<BezierPath<double>> bezier;
-  try {
-    bezier.emplace(subs[0].segments, closed);
-  } catch (const std::exception& e) {
-    js.fail(path, "the SVG path \"" + id + "\" in " + svg + " is not a usable contour: " + e.what());
   }
   const bool reversed =
       closed ? ctx.material(c, path, signed_area(polygon) > 0, "inside") : ctx.material(c, path, std::nullopt, "left");

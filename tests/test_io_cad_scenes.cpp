@@ -1,0 +1,314 @@
+// Whole scenes whose contours come from CAD files (DXF, SVG) or inline NURBS, solved and compared with the
+// analytic scene they draw and with closed forms: the paper's parabola as a 2-span quadratic SPLINE in
+// millimetres (same joint angles as examples/paper_fourbar.json to 1e-9 deg), a disk of two bulge arcs rolling
+// on a LINE (the cycloid: disk angle = -travel / r), an SVG circle inside transformed groups (same as the
+// analytic cycloid scene), and an exact rational NURBS circle rolling inside a ring (the hypocycloid: planet
+// angle -3 phi, relative to the arm -4 phi). The DXF fixtures are written by ezdxf
+// (tests/data/dxf/make_fixtures.py, scenes_mm.dxf).
+#define BOOST_TEST_MODULE io_cad_scenes
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.hpp"
+
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+#include "rollkin/solve/position.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+using namespace rollkin;
+using namespace rollkin::testing;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kExamples = std::string(ROLLKIN_SOURCE_DIR) + "/examples/";
+const std::string kDxf = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/dxf/";
+
+std::string number(double x) {
+  std::ostringstream os;
+  os.precision(17);
+  os << x;
+  return os.str();
+}
+
+/// `text` with `from` replaced by `to` (which must occur).
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  BOOST_REQUIRE_MESSAGE(at != std::string::npos, "test setup: \"" << from << "\" not found");
+  return text.replace(at, from.size(), to);
+}
+
+io::Scene scene_from(const std::string& name, const std::string& text) {
+  return io::load_scene(write_text(scratch_dir("io_cad_scenes") / name, text));
+}
+
+/// The scene's own sweep, solved; every pose must be ok.
+SweepResult<double> solved(const io::Scene& s) {
+  BOOST_REQUIRE(s.sweep.has_value());
+  const Mechanism<double>& m = s.mechanism;
+  SolveData<double> sd(m);
+  VectorX<double> q = s.guess;
+  const SolveReport<double> rep = assemble(m, q, sd, s.held);
+  BOOST_REQUIRE_MESSAGE(rep.ok(), "assembly: " << to_string(rep.status));
+  SweepResult<double> r = sweep(m, sd, q, rep, s.sweep->driver, io::sweep_inputs(*s.sweep));
+  BOOST_REQUIRE(r.all_solved());
+  return r;
+}
+
+/// Largest difference (radians) of the named angle variables between two solved sweeps of the same inputs.
+double worst_angle_difference(const io::Scene& a, const SweepResult<double>& ra, const io::Scene& b,
+                              const SweepResult<double>& rb, const std::vector<std::string>& names) {
+  BOOST_REQUIRE_EQUAL(ra.poses.size(), rb.poses.size());
+  double worst = 0;
+  for (const std::string& n : names) {
+    const int ia = a.mechanism.find_variable(n), ib = b.mechanism.find_variable(n);
+    BOOST_REQUIRE_MESSAGE(ia >= 0 && ib >= 0, "variable " << n);
+    for (std::size_t k = 0; k < ra.poses.size(); ++k) {
+      BOOST_REQUIRE_EQUAL(ra.poses[k].input, rb.poses[k].input);
+      worst = std::max(worst, std::abs(ra.poses[k].q(ia) - rb.poses[k].q(ib)));
+    }
+  }
+  return worst;
+}
+
+const double kDeg = M_PI / 180;
+
+}  // namespace
+
+// (a) The paper's parabola y = 0.5 x^2, x in [-2, 2] m, drawn in mm as a 2-span quadratic SPLINE ($INSUNITS 4),
+// converted to the scene's metres, with the arc-length parameter: the contact is held at the vertex, at arc
+// length sqrt(5) + asinh(2) / 2 from (-2, 2) (the integral of sqrt(1 + x^2) over [-2, 0]).
+BOOST_AUTO_TEST_CASE(paper_parabola_as_mm_spline_gives_the_papers_angles) {
+  const std::string analytic_text = read_text(kExamples + "paper_fourbar.json");
+  const double vertex = std::sqrt(5.0) + std::asinh(2.0) / 2;
+  std::string text = replaced(analytic_text,
+                              "\"type\": \"parabola\", \"a\": 0.5, \"x_range\": [-2, 2],",
+                              "\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"layer\": \"PARABOLA_MM\", "
+                              "\"parameter\": \"arc_length\",");
+  text = replaced(text, "\"material\": \"inside\"", "\"material\": \"left\"");
+  text = replaced(text, "\"values\": [0, 180]", "\"values\": [" + number(vertex) + ", 180]");
+  const io::Scene analytic = io::load_scene(kExamples + "paper_fourbar.json");
+  const io::Scene dxf = scene_from("paper_dxf.json", text);
+  BOOST_TEST(dxf.files_read.back() == kDxf + "scenes_mm.dxf");
+  const auto ra = solved(analytic), rd = solved(dxf);
+  BOOST_TEST(ra.poses.size() == 151u);
+  const double worst = worst_angle_difference(analytic, ra, dxf, rd, {"A.theta23", "B.theta34", "B.theta4", "O_B.theta5"});
+  BOOST_TEST_MESSAGE("paper parabola from DXF: worst angle difference " << worst / kDeg << " deg");
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+// (b) A disk of radius 1000 mm made of two bulge arcs (closed LWPOLYLINE) rolling on a LINE, in a scene in
+// metres: the cycloid, disk angle = -travel / r with r = 1 m.
+BOOST_AUTO_TEST_CASE(two_bulge_disk_rolling_on_a_dxf_line_is_the_cycloid) {
+  std::string text = read_text(kExamples + "cycloid.json");
+  text = replaced(text, "\"type\": \"line\", \"from\": -10, \"to\": 10,",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"layer\": \"TRACK_MM\", \"parameter\": \"arc_length\",");
+  text = replaced(text, "\"type\": \"circle\", \"radius\": 1}",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"layer\": \"DISK_MM\", \"parameter\": \"arc_length\"}");
+  // Contact guesses: the disk's bottom (0, -1) is 3/4 of its circumference from (1, 0); the track's origin
+  // is 10 m from its start.
+  text = replaced(text, "\"values\": [-90, 0]", "\"values\": [" + number(1.5 * M_PI) + ", 10]");
+  const io::Scene s = scene_from("cycloid_dxf.json", text);
+  const auto r = solved(s);
+  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  BOOST_REQUIRE(travel >= 0 && turn >= 0);
+  // The disk's angle at the start depends on which rim point the assembly put in contact (the guesses are
+  // not held); the closed form is about its change: psi - psi_0 = -(s - s_0) / r.
+  BOOST_REQUIRE(r.poses.front().input == 0.0);
+  const double psi0 = r.poses.front().q(turn);
+  double worst = 0;
+  for (const auto& p : r.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) - (-p.q(travel) / 1.0)));
+  BOOST_TEST_MESSAGE("cycloid from DXF: worst |psi + s / r| " << worst << " rad");
+  BOOST_TEST(r.poses.size() == 21u);
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+// (c) The cycloid's disk drawn as an SVG <circle> inside nested transformed groups, in a mm document, for a
+// scene in cm: the same disk angles as the analytic scene (radius 1 cm) and the closed form.
+BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cycloid) {
+  // Centre: scale(2) then rotate(30) keep (0, 0); translate(50 50) moves it to (50, 50) mm, flipped (50, -50)
+  // mm = (5, -5) cm, put back on the link's origin by "at". Radius 2 * 5 mm = 1 cm.
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">\n"
+      "  <g transform=\"translate(50 50) rotate(30)\">\n"
+      "    <g transform=\"scale(2)\"><circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/></g>\n"
+      "  </g>\n"
+      "</svg>\n";
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk.svg", svg);
+  std::string analytic_text = replaced(read_text(kExamples + "cycloid.json"), "\"length\": \"m\"", "\"length\": \"cm\"");
+  std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}",
+                              "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"disk\", \"at\": {\"x\": -5, \"y\": 5}}");
+  const io::Scene analytic = scene_from("cycloid_cm.json", analytic_text);
+  const io::Scene s = scene_from("cycloid_svg.json", text);
+  const auto ra = solved(analytic), rs = solved(s);
+  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  const int turn_a = analytic.mechanism.find_variable("H.psi");
+  // Disk angles counted from the first pose (s = 0): the SVG circle's start point is rotated by the groups,
+  // so the rim point the assembly puts in contact, and with it the initial psi, may differ.
+  const double psi0 = rs.poses.front().q(turn), psi0_a = ra.poses.front().q(turn_a);
+  double worst = 0, closed_form = 0;
+  for (std::size_t k = 0; k < rs.poses.size(); ++k) {
+    const double dpsi = rs.poses[k].q(turn) - psi0;
+    worst = std::max(worst, std::abs(dpsi - (ra.poses[k].q(turn_a) - psi0_a)));
+    closed_form = std::max(closed_form, std::abs(dpsi + rs.poses[k].q(travel)));
+  }
+  BOOST_TEST_MESSAGE("cycloid from SVG: vs analytic " << worst << " rad, vs closed form " << closed_form << " rad");
+  BOOST_TEST(worst < 1e-9 * kDeg);
+  BOOST_TEST(closed_form < 1e-9 * kDeg);
+}
+
+// (d) The planet of examples/hypocycloid.json as an exact rational quadratic NURBS circle (9 control points,
+// weights 1 and sqrt(2)/2): the planet turns -3 phi absolutely, -4 phi relative to the arm (r = 1, R = 4).
+BOOST_AUTO_TEST_CASE(nurbs_circle_rolling_in_a_ring_is_the_hypocycloid) {
+  const std::string nurbs =
+      "\"type\": \"nurbs\", \"degree\": 2, \"knots\": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1], "
+      "\"points\": [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]], "
+      "\"weights\": [1, " + number(std::sqrt(0.5)) + ", 1, " + number(std::sqrt(0.5)) + ", 1, " + number(std::sqrt(0.5)) +
+      ", 1, " + number(std::sqrt(0.5)) + ", 1], \"closed\": true, \"parameter\": \"arc_length\"}";
+  const std::string analytic_text = read_text(kExamples + "hypocycloid.json");
+  const std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}", nurbs);
+  const io::Scene analytic = io::load_scene(kExamples + "hypocycloid.json");
+  const io::Scene s = scene_from("hypocycloid_nurbs.json", text);
+  const auto ra = solved(analytic), rs = solved(s);
+  const int phi = s.mechanism.find_variable("O.phi"), psi = s.mechanism.find_variable("P.psi");
+  BOOST_REQUIRE(phi >= 0 && psi >= 0);
+  double closed_form = 0;
+  for (const auto& p : rs.poses) closed_form = std::max(closed_form, std::abs(p.q(psi) - (-4 * p.q(phi))));
+  const double worst = worst_angle_difference(analytic, ra, s, rs, {"P.psi"});
+  BOOST_TEST_MESSAGE("hypocycloid with a NURBS planet: vs closed form " << closed_form << " rad, vs analytic " << worst);
+  BOOST_TEST(rs.poses.size() == 73u);
+  BOOST_TEST(closed_form < 1e-9 * kDeg);
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+// ---- errors: corners, selection, invalid NURBS --------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(a_dxf_chain_with_a_corner_is_an_error_naming_it) {
+  std::string text = replaced(read_text(kExamples + "cycloid.json"), "\"type\": \"circle\", \"radius\": 1}",
+                              "\"type\": \"dxf\", \"file\": \"" + kDxf + "chain_mm.dxf\", \"layer\": \"KINK\"}");
+  const std::string msg = input_error_of([&] { scene_from("kink.json", text); });
+  BOOST_TEST_MESSAGE(msg);
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "chain_mm.dxf"));
+  BOOST_TEST(contains(msg, "LINE"));
+  BOOST_TEST(contains(msg, "corner of"));
+  BOOST_TEST(contains(msg, "corners are not supported yet as rolling contours"));
+}
+
+BOOST_AUTO_TEST_CASE(dxf_selection_and_reader_errors_name_the_json_path) {
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& contour) { return replaced(base, "\"type\": \"circle\", \"radius\": 1}", contour); };
+  const std::string file = "\"file\": \"" + kDxf + "scenes_mm.dxf\"";
+  std::string msg = input_error_of([&] { scene_from("both.json", with("\"type\": \"dxf\", " + file + ", \"layer\": \"A\", \"handle\": \"2F\"}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].handle"));
+  BOOST_TEST(contains(msg, "not both"));
+  msg = input_error_of([&] { scene_from("none.json", with("\"type\": \"dxf\", " + file + "}")); });
+  BOOST_TEST(contains(msg, "\"layer\" or \"handle\""));
+  msg = input_error_of([&] { scene_from("nolayer.json", with("\"type\": \"dxf\", " + file + ", \"layer\": \"NO_SUCH\"}")); });
+  BOOST_TEST_MESSAGE(msg);
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "scenes_mm.dxf"));
+  msg = input_error_of([&] { scene_from("gap.json", with("\"type\": \"dxf\", \"file\": \"" + kDxf + "errors.dxf\", \"layer\": \"GAP\"}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "gap"));
+}
+
+BOOST_AUTO_TEST_CASE(invalid_or_kinked_nurbs_is_an_error_naming_the_json_path) {
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& contour) { return replaced(base, "\"type\": \"circle\", \"radius\": 1}", contour); };
+  // 4 points of degree 2 need 7 knots.
+  std::string msg = input_error_of([&] {
+    scene_from("knots.json", with("\"type\": \"nurbs\", \"degree\": 2, \"knots\": [0, 0, 0, 1, 1, 1], "
+                                  "\"points\": [[0, 0], [1, 1], [2, 0], [3, 1]]}"));
+  });
+  BOOST_TEST(contains(msg, "links[2].contours[0].knots"));
+  BOOST_TEST(contains(msg, "7"));
+  msg = input_error_of([&] {
+    scene_from("weight.json", with("\"type\": \"nurbs\", \"degree\": 1, \"knots\": [0, 0, 1, 1], "
+                                   "\"points\": [[0, 0], [1, 1]], \"weights\": [1, -1]}"));
+  });
+  BOOST_TEST(contains(msg, "links[2].contours[0].weights"));
+  // "closed" for a curve that does not return to its start.
+  msg = input_error_of([&] {
+    scene_from("open.json", with("\"type\": \"nurbs\", \"degree\": 2, \"knots\": [0, 0, 0, 1, 1, 1], "
+                                 "\"points\": [[0, 0], [1, 1], [2, 0]], \"closed\": true}"));
+  });
+  BOOST_TEST(contains(msg, "links[2].contours[0].closed"));
+  BOOST_TEST(contains(msg, "not its start"));
+  // A degree-1 kink: a polyline corner at (1, 1).
+  msg = input_error_of([&] {
+    scene_from("kinked.json", with("\"type\": \"nurbs\", \"degree\": 1, \"knots\": [0, 0, 1, 2, 2], "
+                                   "\"points\": [[0, 0], [1, 1], [2, 0]]}"));
+  });
+  BOOST_TEST_MESSAGE(msg);
+  BOOST_TEST(contains(msg, "links[2].contours[0]"));
+  BOOST_TEST(contains(msg, "(1, 1)"));
+  BOOST_TEST(contains(msg, "corners are not supported yet as rolling contours"));
+}
+
+// The disk selected by its handle (as ezdxf wrote it, from the fixture's answer file) and doubled by "scale"
+// after the mm -> m conversion: r = 2 m, so psi - psi_0 = -(s - s_0) / 2.
+BOOST_AUTO_TEST_CASE(dxf_disk_by_handle_with_scale_rolls_with_the_scaled_radius) {
+  const std::string answer = read_text(kDxf + "scenes_mm.DISK_MM.txt");
+  const std::string key = "# entities LWPOLYLINE ";
+  const std::size_t at = answer.find(key);
+  BOOST_REQUIRE(at != std::string::npos);
+  const std::string handle = answer.substr(at + key.size(), answer.find('\n', at) - at - key.size());
+  std::string text = read_text(kExamples + "cycloid.json");
+  text = replaced(text, "\"at\": [{\"y\": 1}, {}]", "\"at\": [{\"y\": 2}, {}]");
+  text = replaced(text, "\"type\": \"circle\", \"radius\": 1}",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"handle\": \"" + handle + "\", \"scale\": 2}");
+  const io::Scene s = scene_from("cycloid_dxf_handle.json", text);
+  const auto r = solved(s);
+  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  const double psi0 = r.poses.front().q(turn);
+  double worst = 0;
+  for (const auto& p : r.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) + p.q(travel) / 2));
+  BOOST_TEST_MESSAGE("DXF disk by handle, scale 2: worst " << worst << " rad");
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+BOOST_AUTO_TEST_CASE(svg_id_is_an_alias_of_path_but_not_both) {
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk_alias.svg",
+                                          "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle id=\"d\" r=\"1\"/></svg>\n");
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& keys) {
+    return replaced(base, "\"type\": \"circle\", \"radius\": 1}", "\"type\": \"svg\", \"file\": \"" + svg_file + "\", " + keys + "}");
+  };
+  const io::Scene s = scene_from("alias.json", with("\"id\": \"d\""));
+  BOOST_TEST(s.files_read.back() == svg_file);
+  const std::string msg = input_error_of([&] { scene_from("alias_both.json", with("\"id\": \"d\", \"path\": \"d\"")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].id"));
+  BOOST_TEST(contains(msg, "both"));
+}
+
+// Without units.length in the scene the file's numbers are taken as they are (no conversion): the mm disk
+// of the DXF has radius 1000 and the mm SVG circle radius 10, so psi - psi_0 = -(s - s_0) / r with those r.
+BOOST_AUTO_TEST_CASE(without_scene_units_file_numbers_are_kept) {
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk_mm.svg",
+                                          "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" "
+                                          "viewBox=\"0 0 100 100\"><circle id=\"d\" r=\"10\"/></svg>\n");
+  const std::string base = replaced(read_text(kExamples + "cycloid.json"), "\"length\": \"m\", ", "");
+  const std::vector<std::pair<std::string, double>> cases = {
+      {"\"type\": \"dxf\", \"file\": \"" + kDxf + "scenes_mm.dxf\", \"layer\": \"DISK_MM\", \"parameter\": \"arc_length\"}", 1000.0},
+      {"\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"d\"}", 10.0}};
+  for (const auto& [contour, r] : cases) {
+    std::string text = replaced(base, "\"at\": [{\"y\": 1}, {}]", "\"at\": [{\"y\": " + number(r) + "}, {}]");
+    text = replaced(text, "\"type\": \"circle\", \"radius\": 1}", contour);
+    // Contact guesses for the large disk: its bottom is 3/4 of the circumference from (r, 0).
+    if (r > 100) text = replaced(text, "\"values\": [-90, 0]", "\"values\": [" + number(1.5 * M_PI * r) + ", 10]");
+    const io::Scene s = scene_from("unitless.json", text);
+    BOOST_TEST((s.length == io::LengthUnit::Unitless));
+    const auto res = solved(s);
+    const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+    const double psi0 = res.poses.front().q(turn);
+    double worst = 0;
+    for (const auto& p : res.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) + p.q(travel) / r));
+    BOOST_TEST(worst < 1e-9 * kDeg, contour << ": worst " << worst);
+  }
+}

@@ -1,0 +1,430 @@
+// SVG documents (read_svg_shape): elements, transforms, viewBox and units against an independent SVG reader
+// (svgelements, through tests/data/svg/svgelements_points.py) and closed forms; corners; every error.
+#define BOOST_TEST_MODULE io_svg_reader
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.hpp"
+
+#include "rollkin/io/svg_path.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+using rollkin::BezierPath;
+using rollkin::BezierSegment;
+using rollkin::InputError;
+using rollkin::read_svg_shape;
+using rollkin::read_svg_shape_from_text;
+using rollkin::SvgReadOptions;
+using rollkin::SvgShape;
+using rollkin::testing::contains;
+using V = rollkin::Vec2<double>;
+
+namespace {
+
+const std::string kData = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/svg/";
+const double kMetresPerPx = 0.0254 / 96;
+
+// ---- the independent reference ----------------------------------------------------------------------------
+
+/// A Python 3 with svgelements: $ROLLKIN_PYTHON, else Debian's /usr/bin/python3 (where python3-svgelements
+/// installs), else python3 on PATH.
+std::string python() {
+  if (const char* p = std::getenv("ROLLKIN_PYTHON")) return p;
+  if (std::filesystem::exists("/usr/bin/python3")) return "/usr/bin/python3";
+  return "python3";
+}
+
+struct RefSegment {
+  char kind;                  // L Q C A Z M
+  std::vector<double> v;      // the numbers of the line (see svgelements_points.py)
+  V at(std::size_t k) const { return V(v[2 * k], v[2 * k + 1]); }
+};
+
+std::vector<RefSegment> svgelements_segments(const std::string& file, const std::string& id, const std::string& ppi) {
+  const std::string command =
+      python() + " " + kData + "svgelements_points.py " + kData + file + " " + id + " " + ppi + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  BOOST_REQUIRE(pipe != nullptr);
+  std::string out;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  const int status = pclose(pipe);
+  BOOST_REQUIRE_MESSAGE(status == 0, command + " failed (python3-svgelements installed?): " + out);
+  std::vector<RefSegment> segs;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    RefSegment s;
+    words >> s.kind;
+    for (double x; words >> x;) s.v.push_back(x);
+    segs.push_back(s);
+  }
+  return segs;
+}
+
+/// Largest distance, relative to the drawing's extent, between our curve and svgelements' on the element:
+/// lines and polynomial Beziers by control points, arcs by sampling our rational pieces and placing each
+/// sample on svgelements' ellipse c + u cos t + v sin t at its eccentric angle t; the pieces must cover the
+/// arc's eccentric sweep exactly, in order.
+/// Millimetre drawings are compared in millimetres (svgelements at 25.4 px per inch), the others in px.
+double worst_difference(const std::string& file, const std::string& id) {
+  const bool mm = file.find("_mm") != std::string::npos;
+  SvgReadOptions o;
+  o.flip_y = false;
+  o.metres_per_scene_unit = mm ? 1e-3 : kMetresPerPx;
+  const SvgShape mine = read_svg_shape(kData + file, id, o);
+  const std::vector<RefSegment> ref = svgelements_segments(file, id, mm ? "25.4" : "96");
+  double extent = 0;
+  for (const auto& s : mine.segments)
+    for (const auto& p : s.points) extent = std::max(extent, p.norm());
+  double worst = 0;
+  auto record = [&](const V& a, const V& b) { worst = std::max(worst, (a - b).norm() / extent); };
+  std::size_t i = 0;
+  bool closed = false;
+  for (const RefSegment& r : ref) {
+    BOOST_TEST_CONTEXT(file << " #" << id << " segment " << i << " (" << r.kind << ")") {
+      if (r.kind == 'Z') {
+        closed = true;
+        continue;
+      }
+      BOOST_REQUIRE(r.kind != 'M');  // svgelements sees a second subpath
+      BOOST_REQUIRE(i < mine.segments.size());
+      if (r.kind != 'A') {
+        const BezierSegment<double>& s = mine.segments[i++];
+        BOOST_TEST(!s.rational());
+        BOOST_REQUIRE(s.degree() == (r.kind == 'L' ? 1 : r.kind == 'Q' ? 2 : 3));
+        for (std::size_t k = 0; k < s.points.size(); ++k) record(s.points[k], r.at(k));
+        continue;
+      }
+      const V start = r.at(0), end = r.at(1), c = r.at(2), u = r.at(3), w = r.at(4);
+      const double delta = r.v[10];
+      const double det = u.x() * w.y() - u.y() * w.x();
+      auto angle = [&](const V& p) {
+        const V d = p - c;
+        return std::atan2((u.x() * d.y() - u.y() * d.x()) / det, (d.x() * w.y() - d.y() * w.x()) / det);
+      };
+      record(mine.segments[i].points.front(), start);
+      double swept = 0, previous = angle(start);
+      while (std::abs(swept) < std::abs(delta) - 1e-6) {  // pieces are at most 90 degrees
+        BOOST_REQUIRE(i < mine.segments.size());
+        const BezierSegment<double>& s = mine.segments[i++];
+        BOOST_REQUIRE(s.rational());
+        const BezierPath<double> piece({s}, false);
+        for (int k = 1; k <= 16; ++k) {
+          const V p = piece.jet(k / 16.0, 0).p;
+          const double t = angle(p);
+          record(p, c + u * std::cos(t) + w * std::sin(t));  // on svgelements' ellipse
+          const double step = std::remainder(t - previous, 2 * M_PI);
+          BOOST_TEST(step * delta >= 0);  // in the direction of the arc
+          swept += step;
+          previous = t;
+        }
+      }
+      BOOST_TEST(std::abs(swept - delta) < 1e-11);
+      record(mine.segments[i - 1].points.back(), end);
+    }
+  }
+  BOOST_TEST(i == mine.segments.size());
+  BOOST_TEST(closed == mine.closed);
+  return worst;
+}
+
+// ---- helpers -------------------------------------------------------------------------------------------
+
+std::string error_of(const std::string& svg, const std::string& id, const SvgReadOptions& o = {}) {
+  return rollkin::testing::input_error_of([&] { read_svg_shape_from_text(svg, id, o, "drawing.svg"); });
+}
+
+/// A minimal document around `body`.
+std::string doc(const std::string& body, const std::string& root_attributes = "") {
+  return "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:xlink=\"http://www.w3.org/1999/xlink\"" + root_attributes + ">\n" + body + "\n</svg>\n";
+}
+
+}  // namespace
+
+// ---- (a) fixtures as Inkscape writes them, against svgelements --------------------------------------------
+
+BOOST_AUTO_TEST_CASE(every_fixture_element_matches_svgelements_to_1e_12) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"inkscape_mm.svg", "cam"},       {"inkscape_mm.svg", "skewed"},  {"inkscape_mm.svg", "oval"},
+      {"inkscape_mm.svg", "disk"},      {"inkscape_mm.svg", "rounded"}, {"inkscape_mm.svg", "plain"},
+      {"inkscape_mm.svg", "tri"},       {"inkscape_mm.svg", "zigzag"},  {"inkscape_mm.svg", "bar"},
+      {"inkscape_mm.svg", "mirrored"},  {"px_meet.svg", "lobe"},        {"px_meet.svg", "wheel"},
+      {"unitless_none.svg", "squashed"}, {"unitless_none.svg", "wave"}};
+  double worst = 0;
+  for (const auto& [file, id] : cases) {
+    const double d = worst_difference(file, id);
+    BOOST_TEST_MESSAGE(file << " #" << id << ": largest relative difference to svgelements " << d);
+    BOOST_TEST(d < 1e-12, file << " #" << id << ": " << d);
+    worst = std::max(worst, d);
+  }
+  BOOST_TEST_MESSAGE("largest relative difference over all fixtures: " << worst);
+}
+
+BOOST_AUTO_TEST_CASE(units_of_the_fixtures) {
+  // inkscape_mm.svg: 120mm x 80mm over viewBox 0 0 120 80, so a viewport unit is a millimetre.
+  const SvgShape mm = read_svg_shape(kData + "inkscape_mm.svg", "disk");
+  BOOST_TEST(mm.file_unit == "mm");
+  BOOST_TEST(*mm.metres_per_file_unit == 1e-3);
+  BOOST_TEST(mm.unit_factor == 1.0);  // no scene unit: numbers as they are
+  BOOST_TEST(contains(mm.conversion, "file unit mm kept (the scene declares no units.length)"));
+  SvgReadOptions in_m;
+  in_m.metres_per_scene_unit = 1.0;
+  in_m.scale = 2;
+  const SvgShape m = read_svg_shape(kData + "inkscape_mm.svg", "disk", in_m);
+  BOOST_TEST(m.unit_factor == 1e-3);
+  BOOST_TEST(contains(m.conversion, "mm -> scene units x 0.001; y flipped; scale 2"));
+  for (std::size_t k = 0; k < mm.segments.size(); ++k)
+    for (std::size_t j = 0; j < 3; ++j)
+      BOOST_TEST((m.segments[k].points[j] - mm.segments[k].points[j] * 2e-3).norm() < 1e-15);
+  // The disk: r = 6.25 mm under rotate(-30 50 20) and translate(2,1) and the layer's translate: the radius
+  // survives exactly, the centre is the rotated (72, 26), then y flipped.
+  const double a = -M_PI / 6;
+  const V centre_svg = V(50, 20) + V(std::cos(a) * 22 - std::sin(a) * 6, std::sin(a) * 22 + std::cos(a) * 6) +
+                       V(-12.5, 30.25);
+  const BezierPath<double> disk = rollkin::svg_bezier_path(mm);
+  for (int k = 0; k <= 200; ++k)
+    BOOST_TEST(std::abs((disk.jet(k / 50.0, 0).p - V(centre_svg.x(), -centre_svg.y())).norm() - 6.25) < 1e-12 * 6.25);
+  // px_meet.svg: px declared; unitless_none.svg: nothing declared, numbers kept even with a scene unit.
+  BOOST_TEST(read_svg_shape(kData + "px_meet.svg", "wheel").file_unit == "px");
+  const SvgShape none = read_svg_shape(kData + "unitless_none.svg", "wave", in_m);
+  BOOST_TEST(!none.metres_per_file_unit);
+  BOOST_TEST(none.unit_factor == 1.0);
+  BOOST_TEST(contains(none.conversion, "numbers kept (the file declares no unit)"));
+}
+
+BOOST_AUTO_TEST_CASE(inches_convert_to_scene_millimetres) {
+  // 4in x 3in over viewBox 0 0 400 300: one user unit is 0.01 in = 0.254 mm.
+  const std::string svg = doc("<line id=\"l\" x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\"/>",
+                              " width=\"4in\" height=\"3in\" viewBox=\"0 0 400 300\"");
+  SvgReadOptions o;
+  o.metres_per_scene_unit = 1e-3;
+  const SvgShape s = read_svg_shape_from_text(svg, "l", o, "inches.svg");
+  BOOST_TEST(s.file_unit == "in");
+  BOOST_TEST(std::abs(s.segments[0].points[1].x() - 25.4) < 1e-13);
+}
+
+// ---- (b) closed form: a circle under a group's scale(2) rotate(30) ---------------------------------------
+
+BOOST_AUTO_TEST_CASE(circle_under_scaled_rotated_group_is_the_exact_circle) {
+  const std::string svg = doc("<g transform=\"scale(2) rotate(30)\"><circle id=\"c\" cx=\"3\" cy=\"4\" r=\"5\"/></g>");
+  const SvgShape s = read_svg_shape_from_text(svg, "c", {}, "circle.svg");
+  BOOST_TEST(s.segments.size() == 4u);
+  BOOST_TEST(s.closed);
+  BOOST_TEST(s.corners.empty());
+  // rotate(30) then scale(2): centre 2 R(30deg) (3, 4), radius 10; flip_y negates y.
+  const double a = M_PI / 6;
+  const V centre(2 * (std::cos(a) * 3 - std::sin(a) * 4), -2 * (std::sin(a) * 3 + std::cos(a) * 4));
+  const BezierPath<double> circle = rollkin::svg_bezier_path(s);
+  double worst = 0;
+  for (int k = 0; k <= 400; ++k)
+    worst = std::max(worst, std::abs((circle.jet(k / 100.0, 0).p - centre).norm() - 10) / 10);
+  BOOST_TEST(worst < 1e-12);
+  BOOST_TEST(std::abs(circle.total_length() - 20 * M_PI) < 1e-12 * 20 * M_PI);
+  // The first point is (cx + r, cy) mapped.
+  const V first(2 * (std::cos(a) * 8 - std::sin(a) * 4), -2 * (std::sin(a) * 8 + std::cos(a) * 4));
+  BOOST_TEST((s.segments[0].points[0] - first).norm() < 1e-12 * 10);
+}
+
+BOOST_AUTO_TEST_CASE(transform_lists_compose_right_to_left) {
+  // translate(10,0) rotate(90): the point (1, 0) is first rotated to (0, 1), then moved to (10, 1).
+  const auto end = [](const std::string& transform) {
+    SvgReadOptions o;
+    o.flip_y = false;
+    const SvgShape s = read_svg_shape_from_text(
+        doc("<g transform=\"" + transform + "\"><line id=\"l\" x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\"/></g>"), "l", o, "t.svg");
+    return s.segments[0].points[1];
+  };
+  BOOST_TEST((end("translate(10,0) rotate(90)") - V(10, 1)).norm() < 1e-15);
+  BOOST_TEST((end("translate(10 0),rotate(90)") - V(10, 1)).norm() < 1e-15);
+  BOOST_TEST((end("rotate(90) translate(10,0)") - V(0, 11)).norm() < 1e-14);
+  BOOST_TEST((end("rotate(90, 1, 1)") - V(2, 1)).norm() < 1e-15);  // (1,0) about (1,1): to (2,1)
+  BOOST_TEST((end("skewY(45)") - V(1, 1)).norm() < 1e-15);
+  BOOST_TEST((end("matrix(2 0 0 3 5 7)") - V(7, 7)).norm() < 1e-15);
+  // Nested groups: the inner transform applies first.
+  SvgReadOptions o;
+  o.flip_y = false;
+  const SvgShape nested = read_svg_shape_from_text(
+      doc("<g transform=\"scale(3)\"><g transform=\"translate(1,0)\"><line id=\"l\" x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\" "
+          "transform=\"rotate(90)\"/></g></g>"),
+      "l", o, "t.svg");
+  BOOST_TEST((nested.segments[0].points[1] - V(3, 3)).norm() < 1e-15);
+}
+
+// ---- corners (issue 12) ---------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(corners_are_listed_where_the_tangent_jumps) {
+  SvgReadOptions o;
+  o.flip_y = false;
+  const SvgShape plain = read_svg_shape_from_text(doc("<rect id=\"r\" x=\"1\" y=\"2\" width=\"4\" height=\"3\"/>"), "r", o, "c.svg");
+  BOOST_TEST(plain.corners.size() == 4u);
+  const std::vector<V> vertices{V(1, 2), V(5, 2), V(5, 5), V(1, 5)};  // the corner at the start of segment k
+  for (const auto& c : plain.corners) {
+    BOOST_TEST((c.point - vertices[c.segment]).norm() < 1e-15);
+    BOOST_TEST(std::abs(std::abs(c.turn_deg) - 90) < 1e-12);
+  }
+  BOOST_TEST(plain.corners[1].where == "where top side of the rect meets right side of the rect");
+  const SvgShape rounded = read_svg_shape_from_text(
+      doc("<rect id=\"r\" x=\"1\" y=\"2\" width=\"4\" height=\"3\" rx=\"1\"/>"), "r", o, "c.svg");
+  BOOST_TEST(rounded.corners.empty());
+  BOOST_TEST(rounded.segments.size() == 8u);
+  const SvgShape zig = read_svg_shape_from_text(doc("<polyline id=\"z\" points=\"0,0 1,1 2,0 3,0\"/>"), "z", o, "c.svg");
+  BOOST_TEST(zig.corners.size() == 2u);  // at (1,1) and (2,0); open: no corner at the ends
+  BOOST_TEST((zig.corners[0].point - V(1, 1)).norm() == 0);
+  BOOST_TEST(std::abs(zig.corners[0].turn_deg + 90) < 1e-12);  // y down, not flipped: a right turn is negative
+  BOOST_TEST(zig.corners[1].where == "where edge from point 2 to point 3 of the polyline meets edge from point 3 to "
+                                     "point 4 of the polyline");
+  // A path join that is a kink, and a smooth (S) join that is not.
+  const SvgShape path = read_svg_shape_from_text(
+      doc("<path id=\"p\" d=\"M 0 0 C 1 1 2 1 3 0 S 5 -1 6 0 L 6 2\"/>"), "p", o, "c.svg");
+  BOOST_TEST(path.corners.size() == 1u);
+  BOOST_TEST(path.corners[0].segment == 2u);
+  BOOST_TEST(path.corners[0].where == "where command 3 (S) meets command 4 (L)");
+  // The contour built from a shape with corners names the first one in the user's terms.
+  BOOST_TEST(contains(rollkin::testing::input_error_of([&] { rollkin::svg_bezier_path(path); }),
+                      "c.svg:line 3, path \"p\": corner of "));
+  BOOST_TEST(contains(rollkin::testing::input_error_of([&] { rollkin::svg_bezier_path(path); }),
+                      "deg where command 3 (S) meets command 4 (L) at (6, 0); a rolling contour needs a continuous tangent"));
+}
+
+// ---- defect 9 through the document reader -----------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(closed_path_with_round_off_duplicate_end_is_a_usable_contour) {
+  const SvgShape s = read_svg_shape_from_text(
+      doc("<path id=\"p\" d=\"M 3 2 A 2 2 0 1 1 -1 2 A 2 2 0 1 1 3.0000000000000004 2 Z\"/>"), "p", {}, "c.svg");
+  BOOST_TEST(s.segments.size() == 4u);
+  BOOST_TEST(s.closed);
+  BOOST_TEST(s.corners.empty());
+  BOOST_CHECK_NO_THROW(rollkin::svg_bezier_path(s));
+  // polygon repeating its first point: no zero-length closing edge either
+  const SvgShape tri = read_svg_shape_from_text(doc("<polygon id=\"t\" points=\"0,0 4,0 0,3 0,0\"/>"), "t", {}, "c.svg");
+  BOOST_TEST(tri.segments.size() == 3u);
+  const SvgShape near = read_svg_shape_from_text(doc("<polygon id=\"t\" points=\"0,0 4,0 0,3 1e-17,0\"/>"), "t", {}, "c.svg");
+  BOOST_TEST(near.segments.size() == 3u);
+  BOOST_TEST((near.segments.back().points.back() == V(0, 0)));
+}
+
+// ---- compatibility entry point used by the scene reader ---------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(read_svg_path_applies_group_transforms) {
+  // The silently wrong answer of issue 12: a transform on an enclosing <g> used to be ignored.
+  const std::string file = rollkin::testing::write_text(
+      rollkin::testing::scratch_dir("io_svg_reader") / "group.svg",
+      doc("<g transform=\"translate(5,0)\"><path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"));
+  const auto subs = rollkin::read_svg_path(file, "p", {false, 2.0});
+  BOOST_TEST(subs.size() == 1u);
+  BOOST_TEST((subs[0].segments[0].points[0] - V(10, 0)).norm() == 0);
+  BOOST_TEST((subs[0].segments[0].points[1] - V(12, 2)).norm() == 0);
+  BOOST_TEST(contains(rollkin::testing::input_error_of([] { rollkin::read_svg_path("/nonexistent/x.svg", "p"); }),
+                      "/nonexistent/x.svg: cannot open the SVG file"));
+}
+
+// ---- (c) every error names the file, the element and what is wrong ----------------------------------------
+
+BOOST_AUTO_TEST_CASE(use_references_are_errors) {
+  const std::string used = doc("<path id=\"cam\" d=\"M 0 0 L 1 1\"/>\n<use id=\"u1\" xlink:href=\"#cam\" x=\"5\"/>");
+  const std::string e = error_of(used, "cam");
+  BOOST_TEST(contains(e, "drawing.svg:line 3, path \"cam\": the element is referenced by <use> (line 4, use \"u1\")"));
+  BOOST_TEST(contains(e, "Unlink Clone"));
+  const std::string group = doc("<g id=\"grp\">\n<path id=\"cam\" d=\"M 0 0 L 1 1\"/></g>\n<use href=\"#grp\"/>");
+  BOOST_TEST(contains(error_of(group, "cam"), "its ancestor \"grp\" is referenced by <use> (line 5, <use>)"));
+  const std::string symbol = doc("<symbol id=\"s\"><path id=\"cam\" d=\"M 0 0 L 1 1\"/></symbol><use href=\"#s\"/>");
+  BOOST_TEST(contains(error_of(symbol, "cam"), "path \"cam\": the element is inside <symbol> (line 3, symbol \"s\")"));
+  BOOST_TEST(contains(error_of(doc("<defs><circle id=\"c\" r=\"1\"/></defs>"), "c"), "the element is inside <defs>"));
+}
+
+BOOST_AUTO_TEST_CASE(css_transforms_are_errors) {
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" style=\"fill:none; transform: rotate(10deg)\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "line 3, path \"p\": the element has a CSS transform (transform) in style=\"fill:none; transform: rotate(10deg)\""));
+  BOOST_TEST(contains(error_of(doc("<g id=\"g\" style=\"Transform:scale(2)\">\n<path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"), "p"),
+                      "line 4, path \"p\": its ancestor line 3, g \"g\" has a CSS transform (transform)"));
+  BOOST_TEST(contains(error_of(doc("<style>#p { transform: scale(2) }</style><path id=\"p\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "path \"p\": the document's <style> sheet (line 3, <style>) sets a CSS transform (transform)"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" style=\"transform-origin: 5px 5px\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "the element has a CSS transform (transform-origin)"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" transform-origin=\"5 5\" transform=\"rotate(9)\" d=\"M 0 0 L 1 1\"/>"), "p"),
+                      "line 3, path \"p\": the element has transform-origin=\"5 5\", which rollkin does not apply"));
+  BOOST_TEST(contains(error_of(doc("<switch><path id=\"p\" d=\"M 0 0 L 1 1\"/></switch>"), "p"),
+                      "the element is inside <switch>"));
+  // A property that only ends in "transform" is not one.
+  BOOST_TEST(error_of(doc("<path id=\"p\" style=\"-inkscape-transform-center:1\" d=\"M 0 0 L 1 1\"/>"), "p").empty());
+}
+
+BOOST_AUTO_TEST_CASE(transforms_not_understood_or_degenerate_are_errors) {
+  auto with = [](const std::string& t, bool on_group = false) {
+    return on_group ? error_of(doc("<g id=\"g\" transform=\"" + t + "\"><path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"), "p")
+                    : error_of(doc("<path id=\"p\" transform=\"" + t + "\" d=\"M 0 0 L 1 1\"/>"), "p");
+  };
+  BOOST_TEST(contains(with("perspective(3)"), "line 3, path \"p\": transform=\"perspective(3)\": unknown transform function "
+                                              "\"perspective\"; expected matrix, translate, scale, rotate, skewX or skewY"));
+  BOOST_TEST(contains(with("rotate(10, 5)"), "rotate() takes 1 or 3 numbers, got 2"));
+  BOOST_TEST(contains(with("translate(1,2"), "translate( has no closing parenthesis"));
+  BOOST_TEST(contains(with("translate(1,2) 7"), "is not understood at offset 15"));
+  BOOST_TEST(contains(with("scale(1x)"), "transform=\"scale(1x)\", scale(): number 2 (offset 1, \"x\") is malformed"));
+  BOOST_TEST(contains(with("scale(0)"), "scale() is degenerate (not invertible"));
+  BOOST_TEST(contains(with("matrix(1 2 2 4 0 0)"), "matrix() is degenerate"));
+  BOOST_TEST(contains(with("skewX(90)"), "skewX() is degenerate"));
+  BOOST_TEST(contains(with("scale(0, 1)", true), "path \"p\" (its ancestor line 3, g \"g\"): transform=\"scale(0, 1)\""));
+  BOOST_TEST(contains(with("scale(1e200)"), "scale() is degenerate"));  // det overflows
+  BOOST_TEST(contains(with("translate(1e308) translate(1e308)"), "the combined transform (element, groups, viewBox, scale) is degenerate"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"1\" cx=\"1e308\" transform=\"translate(1e308)\"/>"), "c"),
+                      "circle \"c\": the transforms, viewBox and scale map the shape beyond the largest double"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"1e308\" cx=\"1e308\"/>"), "c"), "circle \"c\": the shape's control points overflow"));
+}
+
+BOOST_AUTO_TEST_CASE(element_kind_id_and_numbers_errors) {
+  BOOST_TEST(contains(error_of(doc("<text id=\"t\">cam</text>"), "t"),
+                      "drawing.svg:line 3, text \"t\": is a <text>, which rollkin does not read as a contour"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"a\" d=\"M 0 0 L 1 1\"/><circle id=\"b\" r=\"1\"/>"), "cam"),
+                      "drawing.svg: no element with id=\"cam\"; ids of path and shape elements: a, b"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"a\" d=\"M 0 0 L 1 1\"/>\n<path id=\"a\" d=\"M 0 0 L 2 1\"/>"), "a"),
+                      "line 4, path \"a\": the id \"a\" is used by 2 elements"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"abc\"/>"), "c"),
+                      "line 3, circle \"c\": r=\"abc\" is not a number"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"1e999\"/>"), "c"), "r=\"1e999\" is out of range"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"0\"/>"), "c"), "circle \"c\": r must be positive, got 0"));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"2em\"/>"), "c"), "r=\"2em\" has the unit \"em\""));
+  BOOST_TEST(contains(error_of(doc("<circle id=\"c\" r=\"10%\"/>"), "c"), "is a percentage of the viewport"));
+  BOOST_TEST(contains(error_of(doc("<polygon id=\"t\" points=\"1,2 3,x 4,4\"/>"), "t"),
+                      "polygon \"t\": points: number 4 (offset 6, \"x 4,4\") is malformed"));
+  BOOST_TEST(contains(error_of(doc("<polyline id=\"t\" points=\"1,2 3,4 5\"/>"), "t"), "odd count of numbers (5)"));
+  BOOST_TEST(contains(error_of(doc("<rect id=\"r\" width=\"0\" height=\"2\"/>"), "r"), "width and height must be positive"));
+  BOOST_TEST(contains(error_of(doc("<line id=\"l\" x1=\"1\" x2=\"1\"/>"), "l"), "line \"l\": has zero length"));
+  BOOST_TEST(contains(error_of(doc("<ellipse id=\"e\" cx=\"1\"/>"), "e"), "has neither rx nor ry"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\"/>"), "p"), "path \"p\": has no d attribute"));
+}
+
+BOOST_AUTO_TEST_CASE(path_data_errors_name_the_element_and_command) {
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\"\n d=\"M 0 0 L 1 1 C 1 2 3\"/>"), "p"),
+                      "drawing.svg:line 3, path \"p\", command 3 (C), d offset 19: expected a number (argument 4 of 6"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 0 M 5 5 L 6 6 m 1 1 h 2\"/>"), "p"),
+                      "line 3, path \"p\": the path data has 3 subpaths (starting at command 2 (L), command 4 (L), command "
+                      "6 (h)); a contour is one subpath"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 Z\"/>"), "p"), "the path data draws nothing"));
+}
+
+BOOST_AUTO_TEST_CASE(document_level_errors) {
+  BOOST_TEST(contains(error_of("<svg>\n  <path id=\"p\" d=\"M 0 0 L 1 1\">\n</svg>\n", "p"),
+                      "drawing.svg:line 3:3: malformed XML: Start-end tags mismatch"));
+  BOOST_TEST(contains(error_of("<html><path id=\"p\" d=\"M 0 0 L 1 1\"/></html>", "p"),
+                      "the root element is <html>; expected an SVG document"));
+  BOOST_TEST(contains(error_of(doc("<svg id=\"inner\" viewBox=\"0 0 1 1\"><path id=\"p\" d=\"M 0 0 L 1 1\"/></svg>"), "p"),
+                      "the element is inside a nested <svg> viewport"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>", " width=\"10mm\" height=\"10\""), "p"),
+                      "line 2, <svg>: width=\"10mm\" and height=\"10\" mix a unit and no unit"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>", " width=\"10mm\" height=\"10mm\" viewBox=\"0 0 0 1\""), "p"),
+                      "viewBox=\"0 0 0 1\" is not \"min-x min-y width height\" with a positive width and height"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>",
+                                   " width=\"10mm\" height=\"10mm\" viewBox=\"0 0 1 1\" preserveAspectRatio=\"xMidYMid cover\""), "p"),
+                      "preserveAspectRatio=\"xMidYMid cover\" is not understood"));
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>", " transform=\"scale(2)\""), "p"),
+                      "the root <svg> has a transform attribute"));
+  SvgReadOptions bad;
+  bad.scale = 0;
+  BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>"), "p", bad), "the scale factor must be positive"));
+}
