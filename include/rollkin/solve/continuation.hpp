@@ -216,6 +216,10 @@ template <class S> class Tracer {
   /// condition times the residual (a bound on the error of the unknowns) exceeds eps^(2/3).
   bool singular_trial(const SolveReport<S>& rep) const {
     if (rep.status == SolveStatus::Underdetermined) return start_.ok();
+    // condition x residual bounds the error of a square system only: with redundant constraints the residual
+    // keeps the least-squares floor of their disagreement (sampled contours), and a rank loss is reported as
+    // Underdetermined above.
+    if (rep.equations != rep.unknowns) return false;
     return rep.ok() && rep.condition * rep.residual > tolerance<S>(S(2) / S(3));
   }
 
