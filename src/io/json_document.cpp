@@ -1,4 +1,5 @@
 #include "rollkin/io/json_document.hpp"
+#include "rollkin/io/text_position.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -43,16 +44,7 @@ class TrackingIterator {
 
 /// 1-based "line:column" of the last character read when `consumed` characters have been read.
 std::string line_column(const std::string& text, std::size_t consumed) {
-  std::size_t line = 1, column = 1;
-  const std::size_t end = std::min(consumed > 0 ? consumed - 1 : 0, text.size());
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
+  const auto [line, column] = line_column_at(text, consumed > 0 ? consumed - 1 : 0);
   return std::to_string(line) + ":" + std::to_string(column);
 }
 

@@ -1,5 +1,6 @@
 // SVG documents: one element by id, its transforms, the root viewport and units (see io/svg_path.hpp).
 #include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/text_position.hpp"
 
 #include "svg_detail.hpp"
 
@@ -71,17 +72,7 @@ struct Where {
 };
 
 std::pair<std::size_t, std::size_t> line_column(const std::string& text, std::ptrdiff_t offset) {
-  std::size_t line = 1, column = 1;
-  const std::size_t end = std::min(text.size(), static_cast<std::size_t>(std::max<std::ptrdiff_t>(offset, 0)));
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
+  return line_column_at(text, static_cast<std::size_t>(std::max<std::ptrdiff_t>(offset, 0)));
 }
 
 std::string local_name(const pugi::xml_node& n) {
