@@ -148,6 +148,16 @@ template <class S> SolveReport<S> assemble_fixture(const Fixture<S>& f, VectorX<
   return assemble(f.mech, q, sd, f.held);
 }
 
+/// Assembles a fixture and sweeps its first driver over `inputs`; the assembly report goes to *assembly.
+inline SweepResult<double> assemble_and_sweep(const Fixture<double>& f, const std::vector<double>& inputs,
+                                              SolveReport<double>* assembly = nullptr) {
+  SolveData<double> sd(f.mech);
+  VectorX<double> q;
+  const auto rep = assemble_fixture(f, q, sd);
+  if (assembly) *assembly = rep;
+  return sweep(f.mech, sd, q, rep, 0, inputs);
+}
+
 template <class S> std::vector<S> degrees(int from, int to, int step = 1) {
   std::vector<S> v;
   for (int d = from; step > 0 ? d <= to : d >= to; d += step) v.push_back(S(d) * pi<S>() / S(180));

@@ -11,21 +11,13 @@ using namespace rollkin::testing;
 
 namespace {
 
-template <class F> SweepResult<double> solve_sweep(F& f, const std::vector<double>& inputs, SolveReport<double>* asm_out = nullptr) {
-  SolveData<double> sd(f.mech);
-  VectorX<double> q;
-  const auto rep = assemble_fixture(f, q, sd);
-  if (asm_out) *asm_out = rep;
-  return sweep(f.mech, sd, q, rep, 0, inputs);
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(hypocycloid_planet_turns_minus_r_minus_r_over_r) {
   for (auto [R, r] : {std::pair{4.0, 1.0}, std::pair{2.0, 1.0}, std::pair{5.0, 1.5}}) {
     auto f = planet_on_arm<double>(R, r, false);
     SolveReport<double> rep;
-    const auto res = solve_sweep(f, degrees<double>(-360, 360, 15), &rep);
+    const auto res = assemble_and_sweep(f, degrees<double>(-360, 360, 15), &rep);
     BOOST_TEST_REQUIRE(res.all_solved());
     BOOST_TEST(rep.equations == 4);
     BOOST_TEST(rep.rank == 3);
@@ -39,7 +31,7 @@ BOOST_AUTO_TEST_CASE(hypocycloid_planet_turns_minus_r_minus_r_over_r) {
 
 BOOST_AUTO_TEST_CASE(hypocycloid_with_ring_twice_planet_traces_a_straight_line) {
   auto f = planet_on_arm<double>(2.0, 1.0, false);
-  const auto res = solve_sweep(f, degrees<double>(0, 360, 10));
+  const auto res = assemble_and_sweep(f, degrees<double>(0, 360, 10));
   BOOST_TEST_REQUIRE(res.all_solved());
   for (const auto& p : res.poses) {
     // The planet rim point that touched the ring at the start: (r cos v0, r sin v0) in the planet frame.
@@ -53,7 +45,7 @@ BOOST_AUTO_TEST_CASE(hypocycloid_with_ring_twice_planet_traces_a_straight_line) 
 BOOST_AUTO_TEST_CASE(epicycloid_planet_turns_plus_r_plus_r_over_r) {
   const double R = 3, r = 1;
   auto f = planet_on_arm<double>(R, r, true);
-  const auto res = solve_sweep(f, degrees<double>(-180, 360, 20));
+  const auto res = assemble_and_sweep(f, degrees<double>(-180, 360, 20));
   BOOST_TEST_REQUIRE(res.all_solved());
   for (const auto& p : res.poses) BOOST_TEST(std::abs(p.q(0) + p.q(1) - (R + r) / r * p.input) < 1e-10);
 }
@@ -64,7 +56,7 @@ BOOST_AUTO_TEST_CASE(twin_elliptical_gears_follow_the_transmission_function) {
     // The cam pair is singular at the vertex poses (phi1 = 0, 180): assemble it at 40 and stay between.
     auto f = elliptical_gears<double>(a, e, rolling, {}, rolling ? 0.0 : 40 * pi<double>() / 180);
     SolveReport<double> rep;
-    const auto res = solve_sweep(f, rolling ? degrees<double>(-170, 170, 10) : degrees<double>(5, 175, 10), &rep);
+    const auto res = assemble_and_sweep(f, rolling ? degrees<double>(-170, 170, 10) : degrees<double>(5, 175, 10), &rep);
     BOOST_TEST_REQUIRE(res.all_solved());
     BOOST_TEST(rep.redundant() == (rolling ? 1 : 0));
     for (const auto& p : res.poses) {
@@ -84,7 +76,7 @@ BOOST_AUTO_TEST_CASE(full_revolutions_of_elliptical_gears_wrap_the_closed_contou
   auto f = elliptical_gears<double>(2, 0.3, true);
   std::vector<double> inputs;
   for (int k = 0; k <= 12; ++k) inputs.push_back(k * pi<double>() / 2);  // three turns
-  const auto res = solve_sweep(f, inputs);
+  const auto res = assemble_and_sweep(f, inputs);
   BOOST_TEST_REQUIRE(res.all_solved());
   // After every whole turn of gear 1, gear 2 has made exactly one whole turn back.
   for (int k = 4; k <= 12; k += 4)
@@ -97,7 +89,7 @@ BOOST_AUTO_TEST_CASE(disk_on_line_traces_a_cycloid) {
   std::vector<double> xs;
   for (int k = -8; k <= 16; ++k) xs.push_back(k * 0.3);
   SolveReport<double> rep;
-  const auto res = solve_sweep(f, xs, &rep);
+  const auto res = assemble_and_sweep(f, xs, &rep);
   BOOST_TEST_REQUIRE(res.all_solved());
   BOOST_TEST(rep.redundant() == 1);  // slider height fixed at r: loop rows and rolling row overlap
   for (const auto& p : res.poses) {

@@ -16,14 +16,6 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180;
 
-template <class F> SweepResult<double> solve_sweep(F& f, const std::vector<double>& inputs, SolveReport<double>* asm_out = nullptr) {
-  SolveData<double> sd(f.mech);
-  VectorX<double> q;
-  const auto rep = assemble_fixture(f, q, sd);
-  if (asm_out) *asm_out = rep;
-  return sweep(f.mech, sd, q, rep, 0, inputs);
-}
-
 std::vector<double> grid_degrees(double from, double to, double step) {
   std::vector<double> v;
   const int n = static_cast<int>(std::floor((to - from) / step + 1e-9));
@@ -90,7 +82,7 @@ int check_crossed_branch(const SweepResult<double>& res) {
 BOOST_AUTO_TEST_CASE(zero_unknowns_solve_as_forward_kinematics) {
   auto f = driven_open_chain<double>(3.0);
   SolveReport<double> rep;
-  const auto res = solve_sweep(f, grid_degrees(-90, 270, 30), &rep);
+  const auto res = assemble_and_sweep(f, grid_degrees(-90, 270, 30), &rep);
   BOOST_TEST(rep.ok());
   BOOST_TEST(rep.unknowns == 0);
   BOOST_TEST(rep.equations == 0);
@@ -109,7 +101,7 @@ BOOST_AUTO_TEST_CASE(zero_unknowns_solve_as_forward_kinematics) {
 BOOST_AUTO_TEST_CASE(anti_parallelogram_keeps_the_crossed_branch_through_both_change_points) {
   auto f = antiparallelogram<double>();
   SolveReport<double> rep;
-  const auto res = solve_sweep(f, grid_degrees(0, 360, 1), &rep);
+  const auto res = assemble_and_sweep(f, grid_degrees(0, 360, 1), &rep);
   BOOST_TEST_REQUIRE(rep.ok());
   BOOST_TEST(std::abs(f.guess(3) - fourbar_branches(0).crossed) < 1 * kDeg);  // assembled on the crossed branch
   const int singular = check_crossed_branch(res);
@@ -119,7 +111,7 @@ BOOST_AUTO_TEST_CASE(anti_parallelogram_keeps_the_crossed_branch_through_both_ch
 
 BOOST_AUTO_TEST_CASE(anti_parallelogram_crossed_between_grid_values) {
   auto f = antiparallelogram<double>();
-  const auto res = solve_sweep(f, grid_degrees(0, 360, 0.7));
+  const auto res = assemble_and_sweep(f, grid_degrees(0, 360, 0.7));
   BOOST_TEST(check_crossed_branch(res) == 0);  // no grid value on a change point: every row regular
   BOOST_TEST(res.all_solved());
 }
@@ -127,7 +119,7 @@ BOOST_AUTO_TEST_CASE(anti_parallelogram_crossed_between_grid_values) {
 BOOST_AUTO_TEST_CASE(anti_parallelogram_backward_through_the_change_point) {
   // Downward from the assembly input: through theta2 = -90 (= 270), landing on it exactly.
   auto f = antiparallelogram<double>();
-  const auto res = solve_sweep(f, grid_degrees(-180, 0, 1));
+  const auto res = assemble_and_sweep(f, grid_degrees(-180, 0, 1));
   BOOST_TEST(check_crossed_branch(res) <= 1);
 }
 
@@ -136,7 +128,7 @@ BOOST_AUTO_TEST_CASE(cam_gears_stepped_exactly_through_the_singular_vertex_pose)
   // the cam Jacobian is singular. tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2) (method.md section 5).
   const double a = 2, e = 0.5;
   auto f = elliptical_gears<double>(a, e, false, {}, 40 * kDeg);
-  const auto res = solve_sweep(f, grid_degrees(40, 320, 5));
+  const auto res = assemble_and_sweep(f, grid_degrees(40, 320, 5));
   int singular = 0;
   for (const auto& p : res.poses) {
     BOOST_TEST_REQUIRE(p.report.has_pose(), p.input / kDeg << ": " << p.report.status << " " << p.report.detail);
