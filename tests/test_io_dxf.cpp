@@ -124,7 +124,8 @@ DxfContour check_fixture(const std::string& file, const std::string& layer) {
                 c.segments.size(), a.points.size(), worst);
     BOOST_TEST(worst < 1e-12);
     BOOST_TEST((c.segments.front().points.front() - a.points.front()).norm() <= 1e-12 * size);
-    if (c.corners.empty()) BezierPath<double>(c.segments, c.closed);  // smooth contours are accepted as they are
+    const BezierPath<double> path(c.segments, c.closed);  // the path splits at the same corners
+    BOOST_TEST(path.corners().size() == c.corners.size());
     return c;
   }
   return {};
@@ -151,6 +152,13 @@ BOOST_AUTO_TEST_CASE(lines_and_arcs_chain_into_a_closed_stadium_in_mm) {
   BOOST_TEST(contains(c.description, "4 entities"));
   BOOST_TEST(contains(c.description, "closed"));
   BOOST_TEST(contains(c.description, "unit mm"));
+}
+
+BOOST_AUTO_TEST_CASE(table_edge_polyline_has_one_corner_inside_the_entity) {
+  const DxfContour c = check_fixture("scenes_mm", "TABLE_MM");
+  BOOST_REQUIRE_EQUAL(c.corners.size(), 1u);
+  BOOST_TEST(c.corners[0].entity == answer("scenes_mm", "TABLE_MM").fact("entities"));
+  BOOST_TEST(std::abs(c.corners[0].turn_degrees + 45) < 1e-12);  // a right turn of 45 degrees
 }
 
 BOOST_AUTO_TEST_CASE(kink_between_two_lines_is_a_corner_naming_both) {

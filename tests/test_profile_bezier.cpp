@@ -165,13 +165,36 @@ BOOST_AUTO_TEST_CASE(validation_names_segments_and_joints) {
   const Seg corner{{V(1, 0), V(1, 1)}, {}};
   const Seg smooth{{V(1, 0), V(2, 0), V(3, 1)}, {}};
   BOOST_TEST(message_of({s0, gap}, false).find("segment 1 starts at") != std::string::npos);
-  BOOST_TEST(message_of({s0, corner}, false).find("joint 0") != std::string::npos);
-  BOOST_TEST(message_of({s0, corner}, false).find("90 degrees") != std::string::npos);
+  BOOST_TEST(message_of({s0, corner}, false).empty());  // a corner splits the path (next test)
   BOOST_TEST(message_of({s0, smooth}, false).empty());
   BOOST_TEST(message_of({s0, smooth}, true).find("closed path") != std::string::npos);
   BOOST_TEST(message_of({Seg{{V(1, 1), V(1, 1)}, {}}}, false).find("degenerate") != std::string::npos);
   BOOST_TEST(message_of({Seg{{V(0, 0), V(1, 1)}, {1.0, -1.0}}}, false).find("weights") != std::string::npos);
   BOOST_TEST(message_of({Seg{{V(0, 0)}, {}}}, false).find("segment 0") != std::string::npos);
+}
+
+// Corners split the path: listed with the segment that starts there, the point and the signed turn; the
+// smooth pieces between them keep their own continuity.
+BOOST_AUTO_TEST_CASE(corners_are_listed_and_split_the_path) {
+  // A unit square, counter-clockwise: four left turns of 90 degrees, the closing one at u = 0.
+  const std::vector<Seg> square{Seg{{V(0, 0), V(1, 0)}, {}}, Seg{{V(1, 0), V(1, 1)}, {}}, Seg{{V(1, 1), V(0, 1)}, {}},
+                                Seg{{V(0, 1), V(0, 0)}, {}}};
+  const BezierPath<double> closed(square, true);
+  BOOST_REQUIRE_EQUAL(closed.corners().size(), 4u);
+  const std::vector<V> vertex{V(0, 0), V(1, 0), V(1, 1), V(0, 1)};
+  for (const auto& c : closed.corners()) {
+    BOOST_TEST((c.point - vertex[c.piece]).norm() == 0.0);
+    BOOST_TEST(std::abs(c.turn - M_PI / 2) < 1e-15);
+  }
+  BOOST_TEST(closed.corners().back().piece == 0u);  // the closing joint comes last
+  const BezierPath<double> open(std::vector<Seg>(square.begin(), square.end() - 1), false);
+  BOOST_TEST(open.corners().size() == 2u);  // an open path has no corner at its ends
+  BOOST_TEST(open.continuity() == 2);       // each piece is a straight segment
+  // A right turn is negative; a G1 joint is no corner.
+  const Seg s0{{V(0, 0), V(1, 0)}, {}};
+  const BezierPath<double> right({s0, Seg{{V(1, 0), V(1, -1)}, {}}}, false);
+  BOOST_TEST(std::abs(right.corners().front().turn + M_PI / 2) < 1e-15);
+  BOOST_TEST(BezierPath<double>({s0, Seg{{V(1, 0), V(2, 0), V(3, 1)}, {}}}, false).corners().empty());
 }
 
 BOOST_AUTO_TEST_CASE(zero_end_derivative_uses_next_control_point) {

@@ -13,10 +13,12 @@ template <class S> class MechanismBuilder {
     if (ground) m_.ground = static_cast<int>(m_.links.size()) - 1;
     return static_cast<int>(m_.links.size()) - 1;
   }
-  /// A contour on `link`, named "<link>.<name>"; reversed = material on the right of the profile's direction.
+  /// A contour on `link`, named "<link>.<name>"; reversed = material on the right of the profile's direction;
+  /// corner_labels describe the profile's corners for messages (Contour).
   int contour(int link, const std::string& name, ProfileShape<S> shape, const SE2<S>& placement = SE2<S>(),
-              bool reversed = false) {
-    m_.contours.emplace_back(m_.links.at(link).name + "." + name, link, std::move(shape), placement, reversed);
+              bool reversed = false, std::vector<std::string> corner_labels = {}) {
+    m_.contours.emplace_back(m_.links.at(link).name + "." + name, link, std::move(shape), placement, reversed,
+                             std::move(corner_labels));
     return static_cast<int>(m_.contours.size()) - 1;
   }
   int revolute(const std::string& name, int a, int b, const SE2<S>& frame_a = SE2<S>(), const SE2<S>& frame_b = SE2<S>(),

@@ -84,7 +84,7 @@ const char* kUsage =
     "\n"
     "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
     "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
-    "domain_exit, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
+    "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
     "\n"
     "Without output options a one-line summary is printed.\n"
     "\n"
@@ -225,6 +225,12 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
       if (r.pair >= 0 && r.contour >= 0)
         what = "the contact of pair '" + m.pairs[r.pair].name + "' leaves the end of contour '" + m.contours[r.contour].name() + "'";
       return "domain_exit: " + what + " at " + where;
+    }
+    case SolveStatus::Corner: {
+      const ContourCorner<double>& k = m.contours[r.contour].corners()[static_cast<std::size_t>(r.corner)];
+      return "corner: the contact of pair '" + m.pairs[r.pair].name + "' reaches a corner of contour '" +
+             m.contours[r.contour].name() + "' (" + k.label + "; (" + fmt(k.point.x(), 10) + ", " + fmt(k.point.y(), 10) +
+             ") in the contour's frame) at " + where + ": a contact cannot pass a corner";
     }
     case SolveStatus::NoConvergence: return "no_convergence: Newton-Raphson does not converge beyond " + where;
     default: return std::string(to_string(r.status)) + ": " + r.detail + " (at " + where + ")";

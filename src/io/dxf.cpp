@@ -3,6 +3,7 @@
 // every group before interpreting it) and the geometry libdxflib reports; then the selected entities are
 // converted to exact Bezier segments and chained.
 #include "rollkin/io/dxf.hpp"
+#include "rollkin/io/units.hpp"
 
 #include "rollkin/profile/nurbs.hpp"
 
@@ -719,12 +720,14 @@ DxfContour contour_from(const std::string& text, const std::string& disk_path, c
   for (std::size_t i = 0; i < chain.owner.size(); ++i)
     if (i == 0 || chain.owner[i] != chain.owner[i - 1]) out.entities.push_back(pieces[chain.owner[i]].label);
 
-  const BezierPathOptions<double> options;
-  for (const PathCorner<double>& k : path_corners(out.segments, out.closed, options.joint_tolerance * chainer.size(), options.corner_tolerance)) {
-    const std::size_t before = chain.owner[(k.piece + out.segments.size() - 1) % out.segments.size()], after = chain.owner[k.piece];
-    const std::string entity = before == after ? pieces[after].label : pieces[before].label + " / " + pieces[after].label;
-    out.corners.push_back({entity, k.piece, k.point, rad_to_deg(k.turn)});
+  const std::size_t n = out.segments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t before = chain.owner[(i + n - 1) % n], after = chain.owner[i];
+    out.joint_entities.push_back(before == after ? pieces[after].label : pieces[before].label + " / " + pieces[after].label);
   }
+  const BezierPathOptions<double> options;
+  for (const PathCorner<double>& k : path_corners(out.segments, out.closed, options.joint_tolerance * chainer.size(), options.corner_tolerance))
+    out.corners.push_back({out.joint_entities[k.piece], k.piece, k.point, rad_to_deg(k.turn)});
   out.description = describe(out, selection, file);
   return out;
 }

@@ -123,7 +123,7 @@ class SceneReader {
     if (!names.insert(nm).second) fail(child(path, "name"), "duplicate contour name \"" + nm + "\" on link \"" + link_name + "\"");
     SE2<double> at;
     if (const json* a = js_.get(c, "at")) at = js_.frame(*a, child(path, "at"), angle_unit_);
-    builder_.contour(link, nm, std::move(shape.shape), at, shape.reversed);
+    builder_.contour(link, nm, std::move(shape.shape), at, shape.reversed, std::move(shape.corner_labels));
   }
 
   /// One link of a revolute or prismatic pair, by name.

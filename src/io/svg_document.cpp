@@ -559,30 +559,12 @@ pugi::xml_node parse_document(pugi::xml_document& doc, const std::string& text, 
 
 // ---- corners --------------------------------------------------------------------------------------------
 
-/// Unit tangent leaving (at_end = false) or arriving at (at_end = true) an end of s: towards the first
-/// control point farther than `tol` from that end (as BezierPath::end_direction).
-P end_direction(const Segment& s, bool at_end, double tol) {
-  const std::size_t n = s.points.size() - 1;
-  const P& end = at_end ? s.points[n] : s.points[0];
-  for (std::size_t k = 1; k <= n; ++k) {
-    const P d = at_end ? P(end - s.points[n - k]) : P(s.points[k] - end);
-    if (d.norm() > tol) return d.normalized();
-  }
-  return P::Zero();
-}
-
 std::vector<SvgCorner> find_corners(const SvgShape& s, double corner_tolerance) {
   std::vector<SvgCorner> out;
   const std::size_t n = s.segments.size();
-  const double tol = BezierPathOptions<double>{}.joint_tolerance * svg_detail::control_extent(s.segments);
-  for (std::size_t j = 0; j < (s.closed ? n : n - 1); ++j) {
-    const std::size_t next = (j + 1) % n;
-    const P a = end_direction(s.segments[j], true, tol), b = end_direction(s.segments[next], false, tol);
-    const double turn = std::atan2(cross2(a, b), a.dot(b));
-    if (std::abs(turn) > corner_tolerance)
-      out.push_back({next, s.segments[next].points.front(), turn * 180 / kPi,
-                     "where " + s.origins[j] + " meets " + s.origins[next]});
-  }
+  const double gap = BezierPathOptions<double>{}.joint_tolerance * svg_detail::control_extent(s.segments);
+  for (const PathCorner<double>& c : path_corners(s.segments, s.closed, gap, corner_tolerance))
+    out.push_back({c.piece, c.point, c.turn * 180 / kPi, "where " + s.origins[(c.piece + n - 1) % n] + " meets " + s.origins[c.piece]});
   std::sort(out.begin(), out.end(), [](const SvgCorner& x, const SvgCorner& y) { return x.segment < y.segment; });
   return out;
 }
@@ -690,14 +672,6 @@ SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, cons
 }
 
 BezierPath<double> svg_bezier_path(const SvgShape& shape) {
-  if (!shape.corners.empty()) {
-    const SvgCorner& c = shape.corners.front();
-    throw InputError(shape.file, shape.location,
-                     "corner of " + fmt(c.turn_deg) + " deg " + c.where + " at (" + fmt(c.point.x()) + ", " +
-                         fmt(c.point.y()) + ")" +
-                         (shape.corners.size() > 1 ? " (and " + std::to_string(shape.corners.size() - 1) + " more)" : "") +
-                         "; a rolling contour needs a continuous tangent: round the corner in the drawing");
-  }
   try {
     return BezierPath<double>(shape.segments, shape.closed);
   } catch (const std::invalid_argument& e) {

@@ -353,5 +353,15 @@ sys.exit(0 if worst < 1e-6 else 1)
 PY
 )
 
+# ---- corners (issue 12): a disk rolling over the vertex of a DXF polyline (ezdxf fixture, flat to x = 3 m) --
+sed -e "s|\"type\": \"line\", \"from\": -10, \"to\": 10,|\"type\": \"dxf\", \"file\": \"$SRC/tests/data/dxf/scenes_mm.dxf\", \"layer\": \"TABLE_MM\", \"parameter\": \"arc_length\",|" \
+  "$EX/cycloid.json" > table.json
+run solve table.json --csv table.csv
+check "corner: exit 1 (a limit met)" $([ "$rc" -eq 1 ] && [ -f table.csv ]; echo $?)
+check "corner: stderr names the pair, the contour, the polyline and the input" \
+  $(grep -Eq "corner: the contact of pair 'C' reaches a corner of contour 'ground.track' \(entity LWPOLYLINE [0-9A-F]+ at \(3000, 0\) mm in .*scenes_mm.dxf, turning -45 deg; \(3, 0\) in the contour's frame\) at S.s = 3(\.0000000)?[0-9]* m" err.txt; echo $?)
+check "corner: rows before s = 3 ok, the next corner, the rest not_reached" \
+  $(awk -F, 'NR > 1 { want = ($1 < 3) ? "ok" : (seen++ ? "not_reached" : "corner"); if ($NF != want) bad = 1 } END { exit bad || !seen }' table.csv; echo $?)
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

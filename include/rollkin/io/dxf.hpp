@@ -28,8 +28,8 @@
 // somewhere else than its end), is an InputError naming both entities (type and handle) and the gap.
 //
 // Corners: every joint (inside an entity or between two) where the tangent direction turns by more than
-// BezierPathOptions' corner tolerance (sqrt(eps) radians, the turn BezierPath refuses) is listed in
-// `corners`; split the segments there before building BezierPaths.
+// BezierPathOptions' corner tolerance (sqrt(eps) radians, the turn at which BezierPath splits the path) is
+// listed in `corners`; a contact stops there (status corner).
 //
 // Units: $INSUNITS 0 (unitless), 1 (in), 2 (ft), 4 (mm), 5 (cm), 6 (m) give metres_per_unit (0 for unitless
 // or absent); any other value is an InputError naming it.
@@ -73,6 +73,7 @@ struct DxfContour {
   std::vector<BezierSegment<double>> segments;  // drawing units, end to end in chain order
   bool closed = false;
   std::vector<DxfCorner> corners;
+  std::vector<std::string> joint_entities;  // per segment: the entity (or "A / B": the two) at its start
   std::vector<std::string> entities;  // "TYPE HANDLE" of the chained entities, in chain order
   int insunits = 0;                   // $INSUNITS (0 when absent)
   std::string unit;                   // "in", "ft", "mm", "cm", "m"; empty when unitless

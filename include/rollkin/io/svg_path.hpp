@@ -100,8 +100,8 @@ SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, cons
 SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id, const SvgReadOptions& options = {},
                                   const std::string& file_label = "");
 
-/// The shape as a contour. A corner (rolling needs a continuous tangent) or any other defect BezierPath
-/// refuses is an InputError naming the file, the element and the place in the user's terms.
+/// The shape as a contour, split at its corners (BezierPath::corners(); a contact stops there). A defect
+/// BezierPath refuses is an InputError naming the file and the element.
 BezierPath<double> svg_bezier_path(const SvgShape& shape);
 
 /// Compatibility: read_svg_shape without scene units, as one subpath.

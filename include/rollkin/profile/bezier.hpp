@@ -13,13 +13,13 @@
 // A circular arc of opening 2 phi is the rational quadratic with end weights 1 and middle weight cos(phi)
 // whose middle control point is the intersection of the end tangents.
 //
-// Validation (rolling needs a continuous tangent): adjacent segments share their end points, and the
-// tangent direction does not jump at a joint. The end tangent direction of a segment is that of the first
-// control point distinct from the end point, so a zero end derivative (coincident control points) is
-// accepted; such a point has zero speed, it is reported by stationary_params().
+// Validation: adjacent segments share their end points. A joint where the tangent direction jumps is a
+// corner: the path is split there into smooth pieces (corners()), and a contact may not pass it (the
+// continuation stops with status `corner`, solve/continuation.hpp). The end tangent direction of a segment
+// is that of the first control point distinct from the end point, so a zero end derivative (coincident
+// control points) is accepted; such a point has zero speed, it is reported by stationary_params().
 #pragma once
 
-#include "rollkin/io/units.hpp"
 #include "rollkin/profile/jet.hpp"
 #include "rollkin/profile/piecewise_arc_length.hpp"
 #include "rollkin/profile/quadrature.hpp"
@@ -49,6 +49,44 @@ template <class S> struct BezierSegment {
   }
 };
 
+/// A joint of a Bezier path where the tangent direction jumps.
+template <class S> struct PathCorner {
+  std::size_t piece = 0;  // index of the segment that starts at the corner (its native parameter u = piece)
+  Vec2<S> point;          // the corner
+  S turn = S(0);          // signed turn of the tangent direction, radians (counter-clockwise positive)
+};
+
+/// The joints of a chain of Bezier segments (segment j's end to segment j + 1's start, and the last to the first
+/// when closed) where the tangent direction turns by more than corner_tolerance radians, in joint order. A
+/// direction is taken towards the first control point farther than `gap` from the joint; a segment without
+/// one gives no corner.
+template <class S>
+std::vector<PathCorner<S>> path_corners(const std::vector<BezierSegment<S>>& segments, bool closed, const S& gap,
+                                        const S& corner_tolerance) {
+  using std::abs;
+  using std::atan2;
+  auto direction = [&](const BezierSegment<S>& s, bool at_end) -> Vec2<S> {
+    const std::size_t n = s.points.size() - 1;
+    const Vec2<S>& e = at_end ? s.points[n] : s.points[0];
+    for (std::size_t k = 1; k <= n; ++k) {
+      const Vec2<S> d = at_end ? Vec2<S>(e - s.points[n - k]) : Vec2<S>(s.points[k] - e);
+      if (d.norm() > gap) return d / d.norm();
+    }
+    return Vec2<S>::Zero();
+  };
+  std::vector<PathCorner<S>> corners;
+  const std::size_t count = segments.size();
+  const std::size_t joints = count == 0 ? 0 : (closed ? count : count - 1);
+  for (std::size_t j = 0; j < joints; ++j) {
+    const std::size_t next = (j + 1) % count;
+    const Vec2<S> a = direction(segments[j], true), b = direction(segments[next], false);
+    if (a.isZero() || b.isZero()) continue;
+    const S turn = atan2(cross2(a, b), a.dot(b));
+    if (abs(turn) > corner_tolerance) corners.push_back({next, segments[next].points.front(), turn});
+  }
+  return corners;
+}
+
 template <class S> struct BezierPathOptions {
   S joint_tolerance = tolerance<S>(S(1) / S(2));   // end point gap, relative to the path's extent
   S corner_tolerance = tolerance<S>(S(1) / S(2));  // tangent direction jump at a joint, radians
@@ -69,6 +107,7 @@ template <class S> class BezierPath {
     extent_ = control_extent();
     for (std::size_t i = 0; i < segments_.size(); ++i) hodographs_.push_back(hodograph(segments_[i]));
     check_joints();
+    corners_ = path_corners(segments_, closed_, gap_tolerance(), options_.corner_tolerance);
     continuity_ = joint_continuity();
     find_stationary_points();
     choose_panels();
@@ -130,9 +169,12 @@ template <class S> class BezierPath {
 
   Domain<S> domain() const { return Domain<S>{S(0), S(segments_.size()), closed_}; }
   ParamKind parameter_kind() const { return ParamKind::Unitless; }
-  /// 2 if p' and p'' agree at every joint (a single open segment counts as smooth), else 1 (G1: the
-  /// tangent direction is continuous, its length may jump).
+  /// Of the smooth pieces between corners: 2 if p' and p'' agree at every other joint (a single open segment
+  /// counts as smooth), else 1 (G1: the tangent direction is continuous, its length may jump).
   int continuity() const { return continuity_; }
+  /// The joints where the tangent direction jumps, in joint order (a closed path's last joint, at u = 0,
+  /// comes last).
+  const std::vector<PathCorner<S>>& corners() const { return corners_; }
 
   Jet<S> jet(const S& u, int order) const {
     const S w = domain().wrap(u);
@@ -157,6 +199,22 @@ template <class S> class BezierPath {
     std::vector<BezierSegment<T>> segs;
     for (const auto& s : segments_) segs.push_back(s.template cast<T>());
     return BezierPath<T>(std::move(segs), closed_, options_.template cast<T>());
+  }
+
+  /// Segment i's point and derivatives in its own t in [0, 1] (both sides of a joint: t = 1 of i, t = 0 of i + 1).
+  Jet<S> segment_jet(std::size_t i, const S& t, int order) const {
+    const Hodograph& h = hodographs_[i];
+    Vec3<S> H[4];
+    for (int j = 0; j < 4; ++j) H[j] = (j <= order && !h[j].empty()) ? de_casteljau(h[j], t) : Vec3<S>::Zero();
+    const S w = H[0].z();
+    auto A = [&](int j) -> Vec2<S> { return H[j].template head<2>(); };
+    auto dw = [&](int j) -> S { return H[j].z(); };
+    Jet<S> r;
+    r.p = A(0) / w;
+    if (order >= 1) r.d1 = (A(1) - dw(1) * r.p) / w;
+    if (order >= 2) r.d2 = (A(2) - S(2) * dw(1) * r.d1 - dw(2) * r.p) / w;
+    if (order >= 3) r.d3 = (A(3) - S(3) * dw(1) * r.d2 - S(3) * dw(2) * r.d1 - dw(3) * r.p) / w;
+    return r;
   }
 
   // ---- the `Pieces` interface of PiecewiseArcLength ----
@@ -248,21 +306,6 @@ template <class S> class BezierPath {
     return c[0];
   }
 
-  Jet<S> segment_jet(std::size_t i, const S& t, int order) const {
-    const Hodograph& h = hodographs_[i];
-    Vec3<S> H[4];
-    for (int j = 0; j < 4; ++j) H[j] = (j <= order && !h[j].empty()) ? de_casteljau(h[j], t) : Vec3<S>::Zero();
-    const S w = H[0].z();
-    auto A = [&](int j) -> Vec2<S> { return H[j].template head<2>(); };
-    auto dw = [&](int j) -> S { return H[j].z(); };
-    Jet<S> r;
-    r.p = A(0) / w;
-    if (order >= 1) r.d1 = (A(1) - dw(1) * r.p) / w;
-    if (order >= 2) r.d2 = (A(2) - S(2) * dw(1) * r.d1 - dw(2) * r.p) / w;
-    if (order >= 3) r.d3 = (A(3) - S(3) * dw(1) * r.d2 - S(3) * dw(2) * r.d1 - dw(3) * r.p) / w;
-    return r;
-  }
-
   S gap_tolerance() const { return options_.joint_tolerance * extent_; }
 
   /// Unit tangent direction leaving the start (at_end = false) or arriving at the end of segment i: towards
@@ -283,8 +326,6 @@ template <class S> class BezierPath {
 
   /// Joint j joins the end of segment j to the start of segment (j + 1) mod n.
   void check_joints() const {
-    using std::abs;
-    using std::atan2;
     const std::size_t n = segments_.size();
     for (std::size_t i = 0; i < n; ++i) end_direction(i, false);  // reports degenerate segments
     for (std::size_t j = 0; j < joint_count(); ++j) {
@@ -296,13 +337,6 @@ template <class S> class BezierPath {
                                     " but segment " + std::to_string(j) + " ends at " + point_text(end) +
                                     (closed_ && next == 0 ? " (closed path)" : "") +
                                     "; adjacent segments must share their end points");
-      const Vec2<S> a = end_direction(j, true), b = end_direction(next, false);
-      const S turn = atan2(cross2(a, b), a.dot(b));
-      if (abs(turn) > options_.corner_tolerance)
-        throw std::invalid_argument("BezierPath: corner of " + number_text(rad_to_deg(turn)) +
-                                    " degrees at joint " + std::to_string(j) + " (end of segment " + std::to_string(j) +
-                                    ", start of segment " + std::to_string(next) + ", at " + point_text(end) +
-                                    "); rolling needs a continuous tangent");
     }
   }
 
@@ -314,7 +348,9 @@ template <class S> class BezierPath {
   int joint_continuity() const {
     const std::size_t n = segments_.size();
     for (std::size_t j = 0; j < joint_count(); ++j) {
-      const Jet<S> l = segment_jet(j, S(1), 2), r = segment_jet((j + 1) % n, S(0), 2);
+      const std::size_t next = (j + 1) % n;
+      if (std::any_of(corners_.begin(), corners_.end(), [&](const PathCorner<S>& c) { return c.piece == next; })) continue;
+      const Jet<S> l = segment_jet(j, S(1), 2), r = segment_jet(next, S(0), 2);
       if (!nearly_equal(l.d1, r.d1) || !nearly_equal(l.d2, r.d2)) return 1;
     }
     return 2;
@@ -357,6 +393,7 @@ template <class S> class BezierPath {
   S extent_ = S(0);
   std::vector<Hodograph> hodographs_;
   int continuity_ = 1;
+  std::vector<PathCorner<S>> corners_;
   std::vector<S> stationary_;
   std::vector<int> panels_;
   PiecewiseArcLength<S> arc_;

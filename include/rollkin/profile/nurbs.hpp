@@ -50,12 +50,6 @@ template <class S> struct Nurbs {
   S hi() const { return knots[points.size()]; }
 };
 
-template <class S> struct PathCorner {
-  std::size_t piece = 0;  // index of the Bezier piece that starts at the corner
-  Vec2<S> point;          // the corner
-  S turn = S(0);          // signed turn of the tangent direction, radians (counter-clockwise positive)
-};
-
 template <class S> struct NurbsPieces {
   std::vector<BezierSegment<S>> segments;  // BezierPath<S>(segments, closed) accepts them when corners is empty
   bool closed = false;
@@ -101,36 +95,6 @@ template <class S> void insert_knot(int p, std::vector<S>& U, std::vector<Vec3<S
 }
 
 }  // namespace detail
-
-/// The joints of a chain of Bezier segments (segment j's end to segment j + 1's start, and the last to the first
-/// when closed) where the tangent direction turns by more than corner_tolerance radians. A direction is taken
-/// towards the first control point farther than `gap` from the joint; a piece without one gives no corner.
-template <class S>
-std::vector<PathCorner<S>> path_corners(const std::vector<BezierSegment<S>>& segments, bool closed, const S& gap,
-                                        const S& corner_tolerance) {
-  using std::abs;
-  using std::atan2;
-  auto direction = [&](const BezierSegment<S>& s, bool at_end) -> Vec2<S> {
-    const std::size_t n = s.points.size() - 1;
-    const Vec2<S>& e = at_end ? s.points[n] : s.points[0];
-    for (std::size_t k = 1; k <= n; ++k) {
-      const Vec2<S> d = at_end ? Vec2<S>(e - s.points[n - k]) : Vec2<S>(s.points[k] - e);
-      if (d.norm() > gap) return d / d.norm();
-    }
-    return Vec2<S>::Zero();
-  };
-  std::vector<PathCorner<S>> corners;
-  const std::size_t count = segments.size();
-  const std::size_t joints = count == 0 ? 0 : (closed ? count : count - 1);
-  for (std::size_t j = 0; j < joints; ++j) {
-    const std::size_t next = (j + 1) % count;
-    const Vec2<S> a = direction(segments[j], true), b = direction(segments[next], false);
-    if (a.isZero() || b.isZero()) continue;
-    const S turn = atan2(cross2(a, b), a.dot(b));
-    if (abs(turn) > corner_tolerance) corners.push_back({next, segments[next].points.front(), turn});
-  }
-  return corners;
-}
 
 /// Throws std::invalid_argument if `c` is not a valid NURBS curve (see the header comment for the rules).
 template <class S> void validate_nurbs(const Nurbs<S>& c) {

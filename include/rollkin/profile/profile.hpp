@@ -17,6 +17,7 @@
 
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace rollkin {
 
@@ -33,16 +34,30 @@ template <class S> struct ArcOrigin {
   bool has_primitive;  // false: arc lengths from u0 are integrated (quadrature variants of analytic curves)
 };
 
+/// A corner of a contour (a joint of a Bezier path where the tangent jumps): a contact is defined on either
+/// side of it but may not pass it (solve/continuation.hpp stops there with status `corner`).
+template <class S> struct ContourCorner {
+  S u;                // the contour's parameter at the corner (a closed contour: any u + k * period too)
+  Vec2<S> point;      // in the contour's own frame (the profile's coordinates)
+  std::string label;  // where it comes from, for messages (e.g. the DXF entities that meet there)
+};
+
 template <class S> class Contour {
  public:
   using Scalar = S;
-  Contour(std::string name, int link, ProfileShape<S> shape, SE2<S> placement, bool reversed)
+  /// corner_labels: one description per corner of the profile, in the order the profile lists them
+  /// (BezierPath::corners()); missing ones are described by the joint's segment numbers.
+  Contour(std::string name, int link, ProfileShape<S> shape, SE2<S> placement, bool reversed,
+          std::vector<std::string> corner_labels = {})
       : name_(std::move(name)),
         link_(link),
         shape_(std::move(shape)),
         placement_(placement),
         placed_(!placement.is_identity()),
-        reversed_(reversed) {}
+        reversed_(reversed),
+        corner_labels_(std::move(corner_labels)) {
+    find_corners();
+  }
 
   const std::string& name() const { return name_; }
   int link() const { return link_; }
@@ -56,6 +71,8 @@ template <class S> class Contour {
     return Domain<S>{-d.hi, -d.lo, d.closed};
   }
   ParamKind parameter_kind() const { return visit([](const auto& p) { return p.parameter_kind(); }); }
+  /// Tangent discontinuities, in this contour's (possibly reversed) parameter.
+  const std::vector<ContourCorner<S>>& corners() const { return corners_; }
   int continuity() const { return visit([](const auto& p) { return p.continuity(); }); }
 
   /// Jet in the LINK frame, material on the left (an identity placement is skipped: it changes no digit).
@@ -118,7 +135,7 @@ template <class S> class Contour {
 
   template <class T> Contour<T> cast() const {
     ProfileShape<T> shape = std::visit([](const auto& p) -> ProfileShape<T> { return p.template cast<T>(); }, shape_);
-    return Contour<T>(name_, link_, std::move(shape), placement_.template cast<T>(), reversed_);
+    return Contour<T>(name_, link_, std::move(shape), placement_.template cast<T>(), reversed_, corner_labels_);
   }
 
  private:
@@ -130,12 +147,32 @@ template <class S> class Contour {
   }
   static S mid_span(const SampledProfile<S>& p, std::size_t k) { return (p.knot(k) + p.knot(k + 1)) / S(2); }
 
+  /// The corners of a Bezier path, directly (u = the segment's index) or re-parameterised by arc length.
+  void find_corners() {
+    const BezierPath<S>* path = std::get_if<BezierPath<S>>(&shape_);
+    const ArcLengthProfile<S>* by_length = std::get_if<ArcLengthProfile<S>>(&shape_);
+    if (by_length) path = by_length->bezier();
+    if (!path) return;
+    const std::vector<PathCorner<S>>& found = path->corners();
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      const PathCorner<S>& c = found[k];
+      const S u = by_length ? by_length->arc_length_at(S(c.piece)) : S(c.piece);
+      std::string label = k < corner_labels_.size()
+                              ? corner_labels_[k]
+                              : "joint of segments " + std::to_string(c.piece == 0 ? path->segments().size() - 1 : c.piece - 1) +
+                                    " and " + std::to_string(c.piece);
+      corners_.push_back({reversed_ ? S(-u) : u, c.point, std::move(label)});
+    }
+  }
+
   std::string name_;
   int link_;
   ProfileShape<S> shape_;
   SE2<S> placement_;
   bool placed_;  // placement is not the identity
   bool reversed_;
+  std::vector<std::string> corner_labels_;
+  std::vector<ContourCorner<S>> corners_;
 };
 
 }  // namespace rollkin

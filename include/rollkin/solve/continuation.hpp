@@ -7,7 +7,8 @@
 // silent jump to another branch); otherwise the step is halved. When the step falls below min_step the motion ends
 // there: a dead point if the unknowns' Jacobian has become ill-conditioned (the limit then lies within
 // about 2 min_step of the last pose), otherwise no convergence. After every accepted step, contact
-// parameters on open contours are checked against their domains; an exit is located by bisection.
+// parameters are checked against their contours' domains (open contours) and corners (tangent
+// discontinuities, which a contact may not pass); the limit is located by bisection to min_step.
 //
 // Singular points on the way (branches meet: bifurcations, singular cam poses). The sign of det J_u (square
 // systems, from the LU's pivots and row parity) is kept along the branch. A converged step that changes it
@@ -66,29 +67,79 @@ template <class S> struct SweepResult {
 
 namespace detail {
 
-/// The contact variables on open contours with their domains, in pair order (closed contours wrap: any
-/// parameter value is inside). Collected once per sweep: the check runs after every accepted step.
-template <class S> struct OpenDomains {
-  std::vector<int> variables;
-  std::vector<Domain<S>> domains;
+/// A contact limit met by a step: contact variable `variable` leaves its open contour's domain (corner < 0)
+/// or reaches corner number `corner` of its contour (Contour::corners()). variable < 0: none.
+struct ContactLimit {
+  int variable = -1;
+  int corner = -1;
+  explicit operator bool() const { return variable >= 0; }
+};
 
-  explicit OpenDomains(const Mechanism<S>& m) {
+/// The contact variables whose contours have an end (open domain) or corners, collected once per sweep: the
+/// check runs after every accepted step. Closed contours wrap, so only their corners can stop a contact.
+template <class S> class ContactLimits {
+ public:
+  explicit ContactLimits(const Mechanism<S>& m) {
     for (const Pair<S>& p : m.pairs) {
       if (!is_contact(p.kind)) continue;
       for (int j = 0; j < 2; ++j) {
-        const Domain<S> d = m.contours[j == 0 ? p.contour_a : p.contour_b].domain();
-        if (d.closed) continue;
-        variables.push_back(p.first_variable + j);
-        domains.push_back(d);
+        const Contour<S>& c = m.contours[j == 0 ? p.contour_a : p.contour_b];
+        if (c.domain().closed && c.corners().empty()) continue;
+        watched_.push_back({p.first_variable + j, c.domain(), &c.corners()});
       }
     }
   }
-  /// First contact variable outside its open contour's domain, or -1.
-  int violation(const VectorX<S>& q) const {
-    for (std::size_t k = 0; k < variables.size(); ++k)
-      if (!domains[k].contains(q(variables[k]))) return variables[k];
-    return -1;
+
+  /// The first limit met by the step from pose `from` to pose `to`: an open domain left at `to`, or a corner
+  /// passed or reached on the way (a contact that starts on a corner may leave it).
+  ContactLimit met(const VectorX<S>& from, const VectorX<S>& to) const {
+    for (const Watched& w : watched_) {
+      const S a = from(w.variable), b = to(w.variable);
+      if (!w.domain.contains(b)) return {w.variable, -1};
+      for (std::size_t k = 0; k < w.corners->size(); ++k)
+        if (reaches(a, b, (*w.corners)[k].u, w.domain)) return {w.variable, static_cast<int>(k)};
+    }
+    return {};
   }
+
+  /// A corner that pose q lies within reach[variable] of (in the contact parameter; a closed contour's
+  /// nearest copy): where a step collapsed because the contact cannot go past the corner.
+  ContactLimit at_corner(const VectorX<S>& q, const VectorX<S>& reach) const {
+    using std::abs;
+    using std::round;
+    for (const Watched& w : watched_) {
+      const S u = q(w.variable);
+      for (std::size_t k = 0; k < w.corners->size(); ++k) {
+        S c = (*w.corners)[k].u;
+        if (w.domain.closed) c += w.domain.period() * round((u - c) / w.domain.period());
+        if (abs(u - c) <= reach(w.variable)) return {w.variable, static_cast<int>(k)};
+      }
+    }
+    return {};
+  }
+
+ private:
+  struct Watched {
+    int variable;
+    Domain<S> domain;
+    const std::vector<ContourCorner<S>>* corners;
+  };
+
+  /// Whether moving the parameter from a to b passes or reaches corner c (on a closed contour, its copy
+  /// c + k * period next beyond a in the direction of motion), without counting a itself.
+  static bool reaches(const S& a, const S& b, const S& c, const Domain<S>& d) {
+    using std::floor;
+    if (a == b) return false;
+    const bool up = b > a;
+    S next = c;
+    if (d.closed) {
+      const S period = d.period();
+      next = up ? S(c + period * (floor((a - c) / period) + S(1))) : S(c - period * (floor((c - a) / period) + S(1)));
+    }
+    return up ? (next > a && next <= b) : (next < a && next >= b);
+  }
+
+  std::vector<Watched> watched_;
 };
 
 /// Cubic Hermite through (q0, v0) at driver value t0 and (q1, v1) at t1, evaluated at t (s = (t - t0)/(t1 - t0);
@@ -112,8 +163,8 @@ template <class S> class Tracer {
  public:
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
-        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), open_(m), span_q_(q0),
-        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0) {
+        v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), limits_(m), span_q_(q0),
+        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0), reach_(q0) {
     rate_(driver) = S(1);
     for (Eigen::Index i = 0; i < weight_.size(); ++i) weight_(i) = S(1) / m.variable_scale(static_cast<int>(i));
     const S scale = m.variable_scale(var_);
@@ -183,8 +234,7 @@ template <class S> class Tracer {
         }
       }
       if (accepted && !singular) {
-        const int out = open_.violation(trial_);
-        if (out >= 0) return locate_domain_exit(t, out);
+        if (const ContactLimit limit = limits_.met(q_, trial_)) return locate_contact_limit(t, limit);
         accept();
         if (sign != 0) sign_ = sign;
         h = clamp_step(target - q_(var_), S(abs(h) * S(2)));
@@ -238,7 +288,7 @@ template <class S> class Tracer {
     const bool accepted = try_step(t_far, rep);
     iterations += rep.iterations;
     evaluations += rep.evaluations;
-    if (!accepted || singular_trial(rep) || open_.violation(trial_) >= 0) return false;
+    if (!accepted || singular_trial(rep) || limits_.met(q_, trial_)) return false;
     const int sign = sd_.determinant_sign();
     solve_velocity(m_, sd_, rate_, held_v_);  // sd is factored at the far pose
     // Checked at t and at the middle of the span (t may lie next to an end, where any cubic fits).
@@ -341,6 +391,11 @@ template <class S> class Tracer {
   /// ill-conditioned (condition grown by ill_conditioned over the sweep's start, or above eps^-1/3), else
   /// no convergence.
   SolveReport<S> classify_stop(const SolveReport<S>& failed) {
+    using std::abs;
+    // The limit lies within about 2 min_step of the current pose; a contact parameter that moves by up to
+    // 4 min_step |du/dt| from here reaches a corner that lies there: the step collapsed at the corner.
+    reach_ = (S(4) * min_step_) * v_.cwiseAbs();
+    if (const ContactLimit corner = limits_.at_corner(q_, reach_)) return contact_limit_report(corner);
     trial_ = q_;
     SolveReport<S> rep = solve_position(m_, trial_, sd_);  // refactor at the last accepted pose
     rep.limit_input = q_(var_);
@@ -359,26 +414,49 @@ template <class S> class Tracer {
     return rep;
   }
 
-  /// Contact variable `out` leaves its domain before driver value t: bisect between the current pose and t.
-  SolveReport<S> locate_domain_exit(S t, int out) {
+  /// A contact limit met before driver value t: bisect between the current pose and t (to min_step), the
+  /// current pose staying on the near side; the limit reported is the one met by the last step that failed.
+  SolveReport<S> locate_contact_limit(S t, ContactLimit limit) {
     using std::abs;
     SolveReport<S> rep;
     while (abs(t - q_(var_)) > min_step_) {
       const S mid = (q_(var_) + t) / S(2);
-      if (try_step(mid, rep) && open_.violation(trial_) < 0) accept();
-      else t = mid;
+      if (!try_step(mid, rep)) {
+        t = mid;
+        continue;
+      }
+      if (const ContactLimit met = limits_.met(q_, trial_)) {
+        limit = met;
+        t = mid;
+      } else {
+        accept();
+      }
     }
+    return contact_limit_report(limit);
+  }
+
+  /// The report of a contact limit met just beyond the current pose (its input value: the limit's).
+  SolveReport<S> contact_limit_report(const ContactLimit& limit) {
     trial_ = q_;
-    rep = solve_position(m_, trial_, sd_);
-    rep.status = SolveStatus::DomainExit;
+    SolveReport<S> rep = solve_position(m_, trial_, sd_);
+    rep.status = limit.corner < 0 ? SolveStatus::DomainExit : SolveStatus::Corner;
     rep.limit_input = q_(var_);
-    const Pair<S>& p = m_.pairs[m_.variables[out].pair];
-    rep.pair = m_.variables[out].pair;
-    rep.contour = out == p.first_variable ? p.contour_a : p.contour_b;
+    const Pair<S>& p = m_.pairs[m_.variables[limit.variable].pair];
+    rep.pair = m_.variables[limit.variable].pair;
+    rep.contour = limit.variable == p.first_variable ? p.contour_a : p.contour_b;
+    rep.corner = limit.corner;
+    const Contour<S>& c = m_.contours[rep.contour];
     std::ostringstream os;
-    os << "contact of pair '" << p.name << "' leaves contour '" << m_.contours[rep.contour].name() << "' ("
-       << m_.variables[out].name << " reaches the end of its domain) at " << m_.variables[var_].name << " = "
-       << to_double(q_(var_));
+    os << "contact of pair '" << p.name << "' ";
+    if (limit.corner < 0) {
+      os << "leaves contour '" << c.name() << "' (" << m_.variables[limit.variable].name << " reaches the end of its domain)";
+    } else {
+      const ContourCorner<S>& k = c.corners()[static_cast<std::size_t>(limit.corner)];
+      os << "reaches a corner of contour '" << c.name() << "' (" << k.label << ", at (" << to_double(k.point.x()) << ", "
+         << to_double(k.point.y()) << ") in the contour's frame, " << m_.variables[limit.variable].name << " = "
+         << to_double(trial_(limit.variable)) << "): the contact cannot pass it";
+    }
+    os << " at " << m_.variables[var_].name << " = " << to_double(q_(var_));
     rep.detail = os.str();
     return rep;
   }
@@ -389,7 +467,7 @@ template <class S> class Tracer {
   const ContinuationSettings<S>& cfg_;
   VectorX<S> q_, q_prev_, trial_, tangent_, v_, v_prev_, rate_;
   VectorX<S> weight_;  // 1 / m.variable_scale of every variable, for scaled_distance
-  OpenDomains<S> open_;
+  ContactLimits<S> limits_;
   bool has_prev_ = false;
   SolveReport<S> start_;
   S base_condition_;
@@ -404,6 +482,7 @@ template <class S> class Tracer {
   // A converged but singular trial kept while stepping over it.
   VectorX<S> held_, held_v_;
   SolveReport<S> held_report_;
+  VectorX<S> reach_;  // how far each variable may move within the located limit (classify_stop)
 };
 
 }  // namespace detail

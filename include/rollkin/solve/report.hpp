@@ -13,6 +13,7 @@ enum class SolveStatus {
                     // branches meet; the values come from the regular poses on both sides (continuation.hpp)
   DeadPoint,        // motion limit: the Jacobian of the unknowns turns singular, the input cannot go on
   DomainExit,       // a contact parameter leaves its open contour's domain
+  Corner,           // a contact reaches a corner of its contour (a tangent discontinuity: no contact beyond)
   NoConvergence,    // Newton did not converge (not identified as a limit)
   CannotAssemble,   // inconsistent constraints: least-squares residual stays above tolerance
   Underdetermined,  // more degrees of freedom than drivers: the pose is not fixed by the inputs
@@ -25,6 +26,7 @@ inline const char* to_string(SolveStatus s) {
     case SolveStatus::Singular: return "singular";
     case SolveStatus::DeadPoint: return "dead_point";
     case SolveStatus::DomainExit: return "domain_exit";
+    case SolveStatus::Corner: return "corner";
     case SolveStatus::NoConvergence: return "no_convergence";
     case SolveStatus::CannotAssemble: return "cannot_assemble";
     case SolveStatus::Underdetermined: return "underdetermined";
@@ -44,10 +46,12 @@ template <class S> struct SolveReport {
   int rank = 0;             // numerical rank of the unknowns' Jacobian
   int equations = 0;        // number of constraint equations
   int unknowns = 0;
-  // Where a limit lies (DeadPoint, DomainExit): the input value, and for DomainExit the pair and contour.
+  // Where a limit lies (DeadPoint, DomainExit, Corner): the input value, and for DomainExit and Corner the pair
+  // and contour, for Corner the index in Contour::corners().
   S limit_input = S(0);
   int pair = -1;
   int contour = -1;
+  int corner = -1;
   std::string detail;       // one human-readable sentence
 
   /// Plainly solved: a regular pose.

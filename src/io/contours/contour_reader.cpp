@@ -1,6 +1,7 @@
 // Checks shared by the contour readers (see contour_reader.hpp).
 #include "contour_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rollkin::io {
@@ -109,6 +110,31 @@ double signed_area(const std::vector<Vec2<double>>& pts) {
   double a = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) a += cross2<double>(pts[i], pts[(i + 1) % pts.size()]);
   return a / 2;
+}
+
+std::vector<std::string> describe_joints(const BezierPath<double>& path, const JointDescriber& describe,
+                                         const std::string& what, const ContourContext& ctx) {
+  std::vector<std::string> labels;
+  for (const PathCorner<double>& c : path.corners()) {
+    labels.push_back(describe(c.piece) + ", turning " + fmt(rad_to_deg(c.turn)) + " deg");
+    ctx.note(what + ": corner " + labels.back() + " at (" + fmt(c.point.x()) + ", " + fmt(c.point.y()) +
+             "): a contact stops there (status corner)");
+  }
+  // Tangent joints (not corners) where the signed curvature kappa = (p' x p'') / |p'|^3 jumps.
+  const std::size_t n = path.segments().size();
+  const std::size_t joints = path.domain().closed ? n : n - 1;
+  const double extent = path.total_length();
+  for (std::size_t j = 0; j < joints; ++j) {
+    const std::size_t next = (j + 1) % n;
+    if (std::any_of(path.corners().begin(), path.corners().end(), [&](const auto& c) { return c.piece == next; })) continue;
+    const double kl = contour_point(path.segment_jet(j, 1.0, 2), 2).curvature();
+    const double kr = contour_point(path.segment_jet(next, 0.0, 2), 2).curvature();
+    if (!std::isfinite(kl) || !std::isfinite(kr)) continue;  // a stationary end: no curvature there
+    if (std::abs(kl - kr) * extent > 1e-9 * (1 + (std::abs(kl) + std::abs(kr)) * extent))
+      ctx.note(what + ": curvature jumps from " + fmt(kl) + " to " + fmt(kr) + " (1/length) at " + describe(next) +
+               " (tangent continuous: a contact rolls through)");
+  }
+  return labels;
 }
 
 }  // namespace rollkin::io

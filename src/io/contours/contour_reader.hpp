@@ -11,6 +11,7 @@
 #include "rollkin/profile/profile.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,11 +69,22 @@ class ContourContext {
 };
 
 /// A contour's profile and material side (reversed: the material is on the right of the profile's
-/// natural direction).
+/// natural direction), and descriptions of its corners in the user's terms (Contour's corner_labels).
 struct ContourShape {
   ProfileShape<double> shape;
   bool reversed;
+  std::vector<std::string> corner_labels = {};
 };
+
+/// Describes the joint at the start of segment `piece` of an imported path in the user's terms (the DXF
+/// entities, the SVG commands, the NURBS knot that meet there).
+using JointDescriber = std::function<std::string(std::size_t piece)>;
+
+/// Labels of the path's corners in BezierPath::corners() order, "<describe(piece)>, turning T deg", and
+/// --verbose notes for `what`: each corner (a contact stops there) and each tangent joint whose curvature
+/// jumps (a contact rolls through it).
+std::vector<std::string> describe_joints(const BezierPath<double>& path, const JointDescriber& describe,
+                                         const std::string& what, const ContourContext& ctx);
 
 /// Reads the contour object c at JSON path `path`. Throws InputError.
 using ContourReader = ContourShape (*)(const json& c, const std::string& path, const ContourContext& ctx);

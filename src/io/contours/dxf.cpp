@@ -43,17 +43,9 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
     js.fail(child(path, "file"), e.what());
   }
   const std::string what = sel.layer.empty() ? "entity " + sel.handle : "layer \"" + sel.layer + "\"";
-  if (!dxf.corners.empty()) {
-    const DxfCorner& k = dxf.corners.front();
-    const std::string unit = dxf.unit.empty() ? "drawing units" : dxf.unit;
-    js.fail(child(path, "file"),
-            InputError(file, "entity " + k.entity,
-                       "corner of " + fmt(k.turn_degrees) + " deg at (" + fmt(k.point.x()) + ", " + fmt(k.point.y()) + ") " +
-                           unit + (dxf.corners.size() > 1 ? " (and " + std::to_string(dxf.corners.size() - 1) + " more)" : "") +
-                           "; corners are not supported yet as rolling contours (a rolling or cam contact needs a "
-                           "continuous tangent): round the corner in the drawing, e.g. with a fillet arc")
-                .what());
-  }
+  const std::string drawing_unit = dxf.unit.empty() ? "drawing units" : dxf.unit;
+  std::vector<Vec2<double>> joint_points;  // in drawing units, for messages
+  for (const BezierSegment<double>& s : dxf.segments) joint_points.push_back(s.points.front());
   const double unit = ctx.unit_factor(dxf.metres_per_unit);
   const double factor = unit * scale;
   scale_segments(dxf.segments, factor);
@@ -71,7 +63,11 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
   }
   const bool reversed = dxf.closed ? ctx.material(c, path, signed_area(control_polygon(dxf.segments)) > 0, "inside")
                                    : ctx.material(c, path, std::nullopt, "left");
-  return {ctx.parameterised(std::move(*bezier), c, path), reversed};
+  std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
+    const Vec2<double>& p = joint_points[piece];
+    return "entity " + dxf.joint_entities[piece] + " at (" + fmt(p.x()) + ", " + fmt(p.y()) + ") " + drawing_unit + " in " + file;
+  }, "dxf " + what, ctx);
+  return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }
 
 }  // namespace rollkin::io

@@ -48,15 +48,6 @@ ContourShape read_nurbs_contour(const json& c, const std::string& path, const Co
     const std::string key = key_of(e.what());
     js.fail(key.empty() ? path : child(path, key), e.what());
   }
-  if (!pieces.corners.empty()) {
-    const PathCorner<double>& k = pieces.corners.front();
-    js.fail(child(path, "knots"),
-            "corner of " + fmt(rad_to_deg(k.turn)) + " deg at (" + fmt(k.point.x()) + ", " + fmt(k.point.y()) +
-                "), NURBS parameter u = " + fmt(pieces.breaks[k.piece]) +
-                (pieces.corners.size() > 1 ? " (and " + std::to_string(pieces.corners.size() - 1) + " more)" : "") +
-                "; corners are not supported yet as rolling contours (a rolling or cam contact needs a continuous "
-                "tangent): lower the knot's multiplicity or place the control points on both sides in line");
-  }
   std::optional<BezierPath<double>> bezier;
   try {
     bezier.emplace(pieces.segments, pieces.closed);
@@ -65,7 +56,10 @@ ContourShape read_nurbs_contour(const json& c, const std::string& path, const Co
   }
   const bool reversed = pieces.closed ? ctx.material(c, path, signed_area(control_polygon(pieces.segments)) > 0, "inside")
                                       : ctx.material(c, path, std::nullopt, "left");
-  return {ctx.parameterised(std::move(*bezier), c, path), reversed};
+  std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
+    return "NURBS knot u = " + fmt(pieces.breaks[piece]) + " (" + child(path, "knots") + ")";
+  }, "nurbs " + path, ctx);
+  return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }
 
 }  // namespace rollkin::io

@@ -32,20 +32,21 @@ ContourShape read_svg_contour(const json& c, const std::string& path, const Cont
   opt.scale = ctx.scale(c, path);
   if (ctx.length_unit() != LengthUnit::Unitless) opt.metres_per_scene_unit = metres_per(ctx.length_unit());
   std::optional<BezierPath<double>> bezier;
-  std::vector<Vec2<double>> polygon;
-  bool closed = false;
+  SvgShape shape;
   try {
-    const SvgShape shape = read_svg_shape(svg, id, opt);
+    shape = read_svg_shape(svg, id, opt);
     ctx.note(shape.conversion);
-    closed = shape.closed;
-    polygon = control_polygon(shape.segments);
     bezier.emplace(svg_bezier_path(shape));
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
   }
-  const bool reversed =
-      closed ? ctx.material(c, path, signed_area(polygon) > 0, "inside") : ctx.material(c, path, std::nullopt, "left");
-  return {ctx.parameterised(std::move(*bezier), c, path), reversed};
+  const bool reversed = shape.closed ? ctx.material(c, path, signed_area(control_polygon(shape.segments)) > 0, "inside")
+                                     : ctx.material(c, path, std::nullopt, "left");
+  const std::size_t n = shape.origins.size();
+  std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
+    return "where " + shape.origins[(piece + n - 1) % n] + " meets " + shape.origins[piece] + " (" + shape.location + " of " + svg + ")";
+  }, "svg " + shape.location, ctx);
+  return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }
 
 }  // namespace rollkin::io

@@ -251,10 +251,14 @@ def scenes_mm():
     disk = msp.add_lwpolyline([(1000, 0, 1), (-1000, 0, 1)], format="xyb", close=True,
                               dxfattribs={"layer": "DISK_MM"})
     track = msp.add_line((-10000, 0), (10000, 0), dxfattribs={"layer": "TRACK_MM"})
+    # A table edge: flat from x = -10 m to 3 m, then falling at 45 degrees; a disk rolling on it from x = 0
+    # reaches the corner after 3 m (status corner).
+    table = msp.add_lwpolyline([(-10000, 0), (3000, 0), (8000, -5000)], dxfattribs={"layer": "TABLE_MM"})
     save(doc, "scenes_mm")
     answer("scenes_mm", "PARABOLA_MM", [parabola], [("closed", 0)])
     answer("scenes_mm", "DISK_MM", [disk], [("closed", 1), ("radius", 1000)])
     answer("scenes_mm", "TRACK_MM", [track], [("closed", 0)])
+    answer("scenes_mm", "TABLE_MM", [table], [("closed", 0), ("corner", "3000 0")])
 
 
 if __name__ == "__main__":
