@@ -49,6 +49,18 @@ BOOST_AUTO_TEST_CASE(reads_all_separators_comments_and_header) {
   BOOST_TEST(pts[4].y() == 0.001);
 }
 
+// Spreadsheet CSV exports: a header row naming x and y, with quotes, units or other case.
+BOOST_AUTO_TEST_CASE(csv_with_a_header_naming_x_and_y_is_accepted) {
+  for (const std::string header : {"x,y", "\"X\";\"Y\"", "x_mm,y_mm", "x (mm), y (mm)", "X[in]\tY[in]"}) {
+    BOOST_TEST_CONTEXT(header) {
+      const auto pts = parse_point_text(header + "\r\n0,1\r\n2.5,-3\r\n", "export.csv", 2);
+      BOOST_REQUIRE_EQUAL(pts.size(), 2u);
+      BOOST_TEST(pts[1].x() == 2.5);
+      BOOST_TEST(pts[1].y() == -3.0);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(scale_factor_applies_to_both_coordinates) {
   const auto pts = parse_point_text("10 20\n30 -40\n", "mm.txt", 2, 0.001);
   BOOST_TEST(pts[0].x() == 0.01);
@@ -72,6 +84,10 @@ BOOST_AUTO_TEST_CASE(errors_name_file_line_and_expectation) {
   BOOST_TEST(contains(error_for("few.txt", "0 0\n1 1\n2 0\n", 4), "only 3 points in the file, at least 4 needed"));
   // A second non-numeric line is not a header.
   BOOST_TEST(contains(error_for("header2.txt", "x y\nu v\n0 0\n"), "header2.txt:2: expected two numbers"));
+  // A header must name x then y: other columns (polar samples, swapped axes) would be misread.
+  BOOST_TEST(contains(error_for("polar.csv", "theta,r\n0,1\n1,1\n"), "polar.csv:1: header \"theta,r\" does not name the columns x and y"));
+  BOOST_TEST(contains(error_for("swapped.csv", "y,x\n0,1\n1,1\n"), "swapped.csv:1:"));
+  BOOST_TEST(contains(error_for("three.csv", "x,y,z\n0,1\n1,1\n"), "three.csv:1:"));
   BOOST_TEST(contains(error_for("comma.txt", "0 0\n1,2x\n"), "comma.txt:2:"));
 }
 

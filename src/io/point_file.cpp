@@ -63,6 +63,23 @@ std::string decimal_commas(const std::string& text) {
          "points (\"" + fields[0] + " " + fields[1] + "\"): ',' separates the columns";
 }
 
+/// Whether a header line's fields name the columns x then y: "x y", "x,y", "\"X\";\"Y\"", "x_mm y_mm",
+/// "x (mm), y (mm)" (quotes and case ignored, a unit in brackets or after '_' allowed). Anything else (e.g.
+/// "theta r": polar samples) would be read as x y silently wrong, so it is refused.
+bool header_names_x_and_y(const std::vector<std::string>& fields) {
+  std::vector<std::string> names;
+  for (std::string f : fields) {
+    f.erase(std::remove_if(f.begin(), f.end(), [](char c) { return c == '"' || c == '\''; }), f.end());
+    std::transform(f.begin(), f.end(), f.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (f.empty() || f.front() == '(' || f.front() == '[') continue;  // a unit of the previous name
+    names.push_back(f);
+  }
+  auto names_axis = [](const std::string& f, char axis) {
+    return f[0] == axis && (f.size() == 1 || f[1] == '_' || f[1] == '(' || f[1] == '[');
+  };
+  return names.size() == 2 && names_axis(names[0], 'x') && names_axis(names[1], 'y');
+}
+
 class PointParser {
  public:
   PointParser(const std::string& source, double scale) : source_(source), scale_(scale) {}
@@ -76,8 +93,13 @@ class PointParser {
     seen_content_ = true;
     double x = 0, y = 0;
     const bool x_ok = parse_number(fields[0], x);
-    if (first_content && !x_ok) return;  // the header line
     const std::string shown = "\"" + excerpt(trimmed(text)) + "\"";
+    if (first_content && !x_ok) {  // the header line
+      if (!header_names_x_and_y(fields))
+        fail(number, "header " + shown + " does not name the columns x and y; a point file holds the coordinates x y " +
+                         "of a planar contour, so a header line must name x then y (e.g. \"x,y\" or \"x_mm y_mm\")");
+      return;
+    }
     const std::string expected = "expected two numbers \"x y\", got ";
     if (const std::string why = decimal_commas(text); !why.empty()) fail(number, why);
     if (!x_ok || (fields.size() > 1 && !parse_number(fields[1], y)))
