@@ -17,6 +17,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "discretised.hpp"
+#include "rollkin/io/units.hpp"
 
 #include <iomanip>
 #include <map>

@@ -10,6 +10,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "mechanisms.hpp"
+#include "rollkin/io/units.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 

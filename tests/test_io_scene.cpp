@@ -3,6 +3,7 @@
 
 #include "test_support.hpp"
 
+#include "rollkin/io/units.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
 

@@ -12,6 +12,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "mechanisms.hpp"
+#include "rollkin/io/units.hpp"
 
 #include <chrono>
 #include <fstream>
