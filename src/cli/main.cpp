@@ -58,6 +58,18 @@ struct UsageError : std::runtime_error {
 /// What the run is doing, for the message of an allocation failure ("out of memory while ...").
 const char* g_doing = "starting";
 
+const char* kExitStatus =
+    "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
+    "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
+    "3 out of memory (nothing written).";
+
+/// A command: its CLI11 subcommand (options bound to the values the parse fills in) and the function that runs
+/// it with those values.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
 // ---- option values: fully parsed, checked before anything is read ------------------------------------------
 
 /// `text` as a finite number, all of it ("1x", "", "nan", "inf" are not).
@@ -80,9 +92,16 @@ CLI::Validator number(const std::string& expected, std::function<bool(double)> a
       "", "");
 }
 
+/// A check of an output file name: not empty, and not an option (CLI11 gives the next argument to an option
+/// that needs a value, so "--csv --rates" would otherwise write a file named "--rates").
 const CLI::Validator kFileName(
-    [](std::string& text) -> std::string { return text.empty() ? "expects a file name, got an empty string" : ""; }, "",
-    "");
+    [](std::string& text) -> std::string {
+      if (text.empty()) return "expects a file name, got an empty string";
+      if (text.rfind("--", 0) == 0)
+        return "expects a file name, got the option \"" + text + "\" (for a file of that name write ./" + text + ")";
+      return {};
+    },
+    "", "");
 
 /// The option `name` storing a number in `slot` when given.
 CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, const std::string& help) {
@@ -115,18 +134,6 @@ void add_sweep_options(CLI::App& app, SweepRequest& r) {
       ->type_name("N")
       ->check(number("a positive number of sub-steps (at least 1)", [](double v) { return v >= 1; }));
 }
-
-const char* kExitStatus =
-    "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
-    "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
-    "3 out of memory (nothing written).";
-
-/// A command: its CLI11 subcommand (options bound to the values the parse fills in) and the function that runs
-/// it with those values.
-struct Command {
-  CLI::App* app;
-  std::function<int()> run;
-};
 
 /// The sweep to run: the scene's, with the command line's overrides.
 io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
@@ -201,6 +208,8 @@ struct SweepRun {
     return files;
   }
 };
+
+// ---- messages and reports ---------------------------------------------------------------------------------
 
 std::string fmt(double v, int digits = 6) {
   char buf[64];
@@ -299,61 +308,6 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
                     "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
                     " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit));
   return lines;
-}
-
-// ---- rollkin reference -----------------------------------------------------------------------------------
-
-struct ReferenceOptions {
-  SweepRequest sweep;
-  int digits = 50;  // MPFR precision in decimal digits: 30, 50 or 100
-  std::string csv;
-};
-
-int run_reference(const ReferenceOptions& o);
-
-Command reference_command(CLI::App& rollkin) {
-  auto o = std::make_shared<ReferenceOptions>();
-  CLI::App* app = rollkin.add_subcommand("reference", "the same assembly and sweep in MPFR, written as decimal strings");
-  add_sweep_options(*app, o->sweep);
-  app->add_option_function<double>(
-         "--digits", [o](double d) { o->digits = static_cast<int>(d); },
-         "MPFR precision in decimal digits: 30, 50 or 100 (default 50)")
-      ->type_name("N")
-      ->check(number("30, 50 or 100", [](double d) { return d == 30 || d == 50 || d == 100; }));
-  add_output(*app, "--csv", o->csv, "the poses as decimal strings (required: reference writes a CSV only)")->required();
-  app->footer(
-      "Runs the same assembly and sweep as 'solve' in MPFR and writes the poses as decimal strings (columns as\n"
-      "the solve CSV without link poses): reference data for regression tests and for measuring the double\n"
-      "solver's error.\n" +
-      std::string(kExitStatus));
-  return {app, [o] { return run_reference(*o); }};
-}
-
-
-/// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
-int run_reference(const ReferenceOptions& o) {
-  SweepRun run(o.sweep, {{"--csv", o.csv}});
-  const io::Scene& scene = run.scene;
-  const io::Sweep& sw = run.sweep;
-  const Mechanism<double>& m = scene.mechanism;
-  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
-  ReferenceSweep ref;
-  g_doing = "computing the reference sweep in MPFR";
-  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
-    std::vector<std::string> values;
-    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
-    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
-  } else {
-    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, run.inputs, o.digits);
-  }
-  g_doing = "writing the output file";
-  run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
-  run.outputs.commit();
-  std::size_t solved = 0;
-  for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
-  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
-            << " poses solved at " << o.digits << " digits, written to " << o.csv << "\n";
-  return solved == ref.poses.size() ? 0 : 1;
 }
 
 // ---- rollkin solve ---------------------------------------------------------------------------------------
@@ -473,6 +427,62 @@ int run_solve(const SolveOptions& o) {
   return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
 }
 
+
+// ---- rollkin reference -----------------------------------------------------------------------------------
+
+struct ReferenceOptions {
+  SweepRequest sweep;
+  int digits = 50;  // MPFR precision in decimal digits: 30, 50 or 100
+  std::string csv;
+};
+
+int run_reference(const ReferenceOptions& o);
+
+Command reference_command(CLI::App& rollkin) {
+  auto o = std::make_shared<ReferenceOptions>();
+  CLI::App* app = rollkin.add_subcommand("reference", "the same assembly and sweep in MPFR, written as decimal strings");
+  add_sweep_options(*app, o->sweep);
+  app->add_option_function<double>(
+         "--digits", [o](double d) { o->digits = static_cast<int>(d); },
+         "MPFR precision in decimal digits: 30, 50 or 100 (default 50)")
+      ->type_name("N")
+      ->check(number("30, 50 or 100", [](double d) { return d == 30 || d == 50 || d == 100; }));
+  add_output(*app, "--csv", o->csv, "the poses as decimal strings (required: reference writes a CSV only)")->required();
+  app->footer(
+      "Runs the same assembly and sweep as 'solve' in MPFR and writes the poses as decimal strings (columns as\n"
+      "the solve CSV without link poses): reference data for regression tests and for measuring the double\n"
+      "solver's error.\n" +
+      std::string(kExitStatus));
+  return {app, [o] { return run_reference(*o); }};
+}
+
+/// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
+int run_reference(const ReferenceOptions& o) {
+  SweepRun run(o.sweep, {{"--csv", o.csv}});
+  const io::Scene& scene = run.scene;
+  const io::Sweep& sw = run.sweep;
+  const Mechanism<double>& m = scene.mechanism;
+  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
+  ReferenceSweep ref;
+  g_doing = "computing the reference sweep in MPFR";
+  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
+    std::vector<std::string> values;
+    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
+    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
+  } else {
+    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, run.inputs, o.digits);
+  }
+  g_doing = "writing the output file";
+  run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
+  run.outputs.commit();
+  std::size_t solved = 0;
+  for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
+  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
+            << " poses solved at " << o.digits << " digits, written to " << o.csv << "\n";
+  return solved == ref.poses.size() ? 0 : 1;
+}
+
+// ---- main: the commands --------------------------------------------------------------------------------
 
 /// CLI11's "The following argument was not expected: X" in rollkin's words: what X was taken for and what
 /// was expected. The arguments are named in command-line order.

@@ -67,6 +67,9 @@ for bad in "--step 1x" "--from nan" "--to inf" "--step ''" "--from 1e999"; do
 done
 run solve "$EX/paper_fourbar.json" --csv
 check "--csv without a value: exit 2, names --csv" $([ "$rc" -eq 2 ] && grep -q -- "--csv" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --csv --rates
+check "--csv followed by an option: exit 2, no file named --rates" \
+  $([ "$rc" -eq 2 ] && grep -q -- '--csv: expects a file name, got the option "--rates"' err.txt && [ ! -e ./--rates ]; echo $?)
 run solve "$EX/paper_fourbar.json" --from=-10 --to -5 --step 5 --csv neg.csv
 check "negative values (--from=-10, --to -5) are values, not options" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' neg.csv)" -eq 2 ]; echo $?)
 
