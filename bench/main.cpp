@@ -19,15 +19,20 @@
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/interference.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <malloc.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -793,33 +798,48 @@ void write_svg(const std::string& path, const std::vector<Row>& rows, const std:
   io::write_file_atomic(path, svg);
 }
 
+/// --repeats: a whole number of timed sweeps, all of the text parsed (CLI11 names the option in front).
+const CLI::Validator kRepeats(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      errno = 0;
+      const long v = std::strtol(text.c_str(), &end, 10);
+      if (!text.empty() && *end == '\0' && errno == 0 && v >= 1 && v <= 1000000) return {};
+      return "expects a whole number of timed sweeps from 1 to 1000000, got \"" + text + "\"";
+    },
+    "", "");
+
+/// The command line, parsed by CLI11 into `opt`. Returns the exit status when the program should stop now:
+/// 0 after --help, 2 (with the message on stderr) for an unknown option or a bad value.
+std::optional<int> parse_options(int argc, char** argv, Options& opt) {
+  CLI::App app("rollkin_bench: accuracy and speed of the position solver over the profile representations "
+               "(bench/README.md, docs/benchmark.md)",
+               "rollkin_bench");
+  app.add_flag("--quick", opt.quick, "CI smoke run: no 1e5/1e6 sweeps, 7 repeats");
+  app.add_option("--csv", opt.csv, "write the results table as CSV")->type_name("FILE");
+  app.add_option("--svg", opt.svg, "write the chart of time per pose against error")->type_name("FILE");
+  app.add_option("--repeats", opt.repeats, "timed sweeps per case (default 31, 7 with --quick)")
+      ->type_name("N")
+      ->check(kRepeats);
+  app.add_option("--only", opt.only, "only the cases whose name contains TEXT (skips load, memory and savings)")
+      ->type_name("TEXT");
+  app.add_flag_callback("--no-reference", [&opt] { opt.reference = false; },
+                        "skip the MPFR reference (no errors reported; for profilers)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help
+    std::cerr << "rollkin_bench: " << e.what() << "\n(rollkin_bench --help lists the options)\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::cerr << "rollkin_bench: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--quick") opt.quick = true;
-    else if (a == "--csv") opt.csv = value();
-    else if (a == "--svg") opt.svg = value();
-    else if (a == "--repeats") opt.repeats = std::stoi(value());
-    else if (a == "--only") opt.only = value();
-    else if (a == "--no-reference") opt.reference = false;
-    else if (a == "-h" || a == "--help") {
-      std::cout << "usage: rollkin_bench [--quick] [--csv FILE] [--svg FILE] [--repeats N] [--only TEXT] [--no-reference]\n";
-      return 0;
-    } else {
-      std::cerr << "rollkin_bench: unknown option " << a << "\n";
-      return 2;
-    }
-  }
+  if (const std::optional<int> stop = parse_options(argc, argv, opt)) return *stop;
   // Fixed mmap threshold: large blocks are mapped and returned to the system when freed, so the resident
   // memory deltas of one build are not hidden by the allocator keeping earlier blocks.
   mallopt(M_MMAP_THRESHOLD, 64 * 1024);

@@ -21,11 +21,12 @@ log() { echo "[setup] $*" >&2; }
 # ---- 1. packages ---------------------------------------------------------------------------------------
 # Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
 # and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json; libdxflib (DXF) and pugixml (SVG/XML)
-# readers; ezdxf and svgelements, independent producers and readers of the CAD test files.
+# readers; CLI11 (command-line parsing of build/rollkin and the benchmark); ezdxf and svgelements, independent
+# producers and readers of the CAD test files.
 packages=(
   g++ cmake make
   libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
-  libdxflib-dev libpugixml-dev
+  libdxflib-dev libpugixml-dev libcli11-dev
   python3 python3-ezdxf python3-svgelements
 )
 

@@ -2,14 +2,18 @@
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
 //                       [--rates] [--verbose] [--interference] [--max-steps N]
-//   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE
-//   rollkin --help | --version
+//   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] [--max-steps N] --csv FILE
+//   rollkin --help | --version;  rollkin COMMAND --help
 //
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
 // pose): one line per limit or singular pose on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
 // an output that would overwrite an input, an output that cannot be written): the message on stderr and no
 // output file written; 3 out of memory ("out of memory while ..."), no output file written. Outputs are all
 // or nothing (rollkin/io/output_set.hpp).
+//
+// The command line is parsed by CLI11. Each command is one section below: its options struct, the function
+// that declares its options (descriptions are the --help text) and the function that runs it; main() lists
+// the commands. A new command is one more such section and one line in main().
 #include "output.hpp"
 
 #include "rollkin/io/output_set.hpp"
@@ -18,13 +22,18 @@
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/interference.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -41,6 +50,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace rollkin;
 
+/// A command line that parses but asks for something that cannot be done (found after reading the scene).
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -48,157 +58,158 @@ struct UsageError : std::runtime_error {
 /// What the run is doing, for the message of an allocation failure ("out of memory while ...").
 const char* g_doing = "starting";
 
-struct Options {
-  std::string command;  // "solve" or "reference"
-  int digits = 50;      // reference: MPFR precision (30, 50 or 100 decimal digits)
-  std::string scene;
-  std::optional<double> from, to, step;
-  std::string csv, plot, draw;
-  bool rates = false, verbose = false, interference = false;
-  double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
-};
-
-const char* kUsage =
-    "usage: rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]\n"
-    "                           [--rates] [--verbose] [--interference] [--max-steps N]\n"
-    "       rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] --csv FILE\n"
-    "       rollkin --help | --version\n"
-    "\n"
-    "Kinematic analysis of planar mechanisms with rolling pairs. 'solve' loads the scene (JSON, see\n"
-    "docs/scene_format.md), assembles the mechanism and sweeps its input over the scene's \"sweep\"\n"
-    "(--from/--to/--step override it, in the scene's angle unit for angle inputs).\n"
-    "\n"
-    "  --csv FILE       one row per input value: the input, every other pair variable, (with --rates) the rates\n"
-    "                   d(var)/d(input), every link's world pose, the residual and the solver status\n"
-    "                   (angles in degrees, lengths in scene units)\n"
-    "  --plot FILE.svg  the pair variables against the input (angles; lengths in a second chart)\n"
-    "  --draw FILE.svg  the mechanism at about five poses across the solved range\n"
-    "  --rates          add the rate columns to the CSV\n"
-    "  --verbose        print the assembly report (rank, redundant constraints, mobility, condition)\n"
-    "                   and how each imported contour (SVG, DXF) was converted to scene units\n"
-    "  --interference   check every solved pose for contours that penetrate or touch at a second point\n"
-    "                   (findings on stderr; they make the exit status 1)\n"
-    "  --max-steps N    refuse (exit 2) a request estimated to need more than N continuation sub-steps\n"
-    "                   (default 1e7; the estimate is the input's travel over the largest sub-step, 5 deg\n"
-    "                   for angles, plus the number of values)\n"
-    "\n"
-    "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
-    "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
-    "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
-    "\n"
-    "Without output options a one-line summary is printed.\n"
-    "\n"
-    "'reference' runs the same assembly and sweep in MPFR (30, 50 or 100 decimal digits, default 50) and\n"
-    "writes the poses as decimal strings (columns as the solve CSV without link poses): reference data for\n"
-    "regression tests and for measuring the double solver's error.\n"
+const char* kExitStatus =
     "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
     "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
-    "3 out of memory (nothing written).\n";
+    "3 out of memory (nothing written).";
 
-double parse_value(const std::string& opt, const std::string& text) {
+/// A command: its CLI11 subcommand (options bound to the values the parse fills in) and the function that runs
+/// it with those values.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+// ---- option values: fully parsed, checked before anything is read ------------------------------------------
+
+/// `text` as a finite number, all of it ("1x", "", "nan", "inf" are not).
+std::optional<double> finite_number(const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw UsageError(opt + " expects a number, got \"" + text + "\"");
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
   return v;
 }
 
-Options parse_args(const std::vector<std::string>& args) {
-  Options o;
-  if (args.empty() || (args[0] != "solve" && args[0] != "reference"))
-    throw UsageError(args.empty() ? "missing command"
-                                  : "unknown command \"" + args[0] + "\"; expected \"solve\" or \"reference\"");
-  o.command = args[0];
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
-      return args[++i];
-    };
-    auto set_path = [&](std::string& slot) {
-      if (!slot.empty()) throw UsageError(a + " given twice");
-      slot = value();
-      if (slot.empty()) throw UsageError(a + " needs a file name");
-    };
-    if (a == "--from") o.from = parse_value(a, value());
-    else if (a == "--to") o.to = parse_value(a, value());
-    else if (a == "--step") o.step = parse_value(a, value());
-    else if (a == "--csv") set_path(o.csv);
-    else if (a == "--plot") set_path(o.plot);
-    else if (a == "--draw") set_path(o.draw);
-    else if (a == "--rates") o.rates = true;
-    else if (a == "--interference" && o.command == "solve") o.interference = true;
-    else if (a == "--max-steps") {
-      o.max_steps = parse_value(a, value());
-      if (!(o.max_steps >= 1)) throw UsageError("--max-steps expects a positive number of sub-steps");
-    }
-    else if (a == "--digits" && o.command == "reference") {
-      const double d = parse_value(a, value());
-      if (d != 30 && d != 50 && d != 100) throw UsageError("--digits must be 30, 50 or 100");
-      o.digits = static_cast<int>(d);
-    }
-    else if (a == "--verbose" || a == "-v") o.verbose = true;
-    else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option \"" + a + "\"");
-    else if (o.scene.empty()) o.scene = a;
-    else throw UsageError("more than one scene file given (\"" + o.scene + "\" and \"" + a + "\")");
-  }
-  if (o.scene.empty()) throw UsageError("missing scene file");
-  if (o.command == "reference" && (o.csv.empty() || !o.plot.empty() || !o.draw.empty() || o.rates))
-    throw UsageError("reference writes a CSV only: give --csv FILE (and no --plot, --draw or --rates)");
-  return o;
+/// A check of an option's value: a finite number (for which `accept`, when given, is true). CLI11 names the
+/// option in front of the message: "--step: expects a number, got \"1x\"".
+CLI::Validator number(const std::string& expected, std::function<bool(double)> accept = {}) {
+  return CLI::Validator(
+      [expected, accept](std::string& text) -> std::string {
+        const std::optional<double> v = finite_number(text);
+        if (v && (!accept || accept(*v))) return {};
+        return "expects " + expected + ", got \"" + text + "\"";
+      },
+      "", "");
+}
+
+/// A check of an output file name: not empty, and not an option (CLI11 gives the next argument to an option
+/// that needs a value, so "--csv --rates" would otherwise write a file named "--rates").
+const CLI::Validator kFileName(
+    [](std::string& text) -> std::string {
+      if (text.empty()) return "expects a file name, got an empty string";
+      if (text.rfind("--", 0) == 0)
+        return "expects a file name, got the option \"" + text + "\" (for a file of that name write ./" + text + ")";
+      return {};
+    },
+    "", "");
+
+/// The option `name` storing a number in `slot` when given.
+CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, const std::string& help) {
+  return app.add_option_function<double>(name, [&slot](double v) { slot = v; }, help)
+      ->type_name("V")
+      ->check(number("a number"));
+}
+
+/// The option `name` storing an output file name in `slot`.
+CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slot, const std::string& help) {
+  return app.add_option(name, slot, help)->type_name("FILE")->check(kFileName);
+}
+
+// ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
+
+/// The scene and the part of the sweep the command line may override.
+struct SweepRequest {
+  std::string scene;
+  std::optional<double> from, to, step;
+  double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
+};
+
+void add_sweep_options(CLI::App& app, SweepRequest& r) {
+  app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
+  add_number(app, "--from", r.from, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
+  add_number(app, "--to", r.to, "last input value (overrides the scene's \"sweep\")");
+  add_number(app, "--step", r.step, "step between input values, signed from --from toward --to");
+  app.add_option("--max-steps", r.max_steps,
+                 "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps (default 1e7)")
+      ->type_name("N")
+      ->check(number("a positive number of sub-steps (at least 1)", [](double v) { return v >= 1; }));
 }
 
 /// The sweep to run: the scene's, with the command line's overrides.
-io::Sweep requested_sweep(const io::Scene& scene, const Options& o) {
+io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
   io::Sweep s;
   if (scene.sweep) {
     s = *scene.sweep;
   } else {
-    if (!o.from || !o.to || !o.step)
+    if (!r.from || !r.to || !r.step)
       throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
     s.input = scene.inputs.front();
     s.driver = 0;
     s.variable = scene.mechanism.drivers[0];
     s.unit = scene.unit_of(s.variable);
   }
-  if (o.from) s.from = *o.from;
-  if (o.to) s.to = *o.to;
-  if (o.step) s.step = *o.step;
+  if (r.from) s.from = *r.from;
+  if (r.to) s.to = *r.to;
+  if (r.step) s.step = *r.step;
   const std::string bad = io::check_sweep(s);
   if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
   return s;
 }
 
 /// Bounded work: refuses before solving a request whose estimated continuation sub-steps exceed --max-steps.
-void check_work(const io::Scene& scene, const io::Sweep& sw, const std::vector<double>& inputs, const Options& o) {
+void check_work(const io::Scene& scene, const io::Sweep& sw, const std::vector<double>& inputs, double max_steps) {
   const double estimate = estimate_substeps(scene.mechanism, scene.guess, sw.driver, inputs);
-  if (estimate <= o.max_steps) return;
+  if (estimate <= max_steps) return;
   std::ostringstream os;
   os << "the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
      << std::scientific << std::setprecision(2) << estimate << " continuation sub-steps, above the limit "
-     << o.max_steps << " (--max-steps); ask for a smaller range (--from/--to), a larger --step (fewer values),"
+     << max_steps << " (--max-steps); ask for a smaller range (--from/--to), a larger --step (fewer values),"
      << " or raise the limit with --max-steps";
   throw UsageError(os.str());
 }
 
-/// The output files of the command line, each checked against the files the run read and against each
-/// other before anything is solved; written all or nothing at the end.
-struct Outputs {
-  io::OutputSet set;
-  std::optional<std::size_t> csv, plot, draw;
+/// The start of every sweeping command: the scene read, the output files checked against the files it read
+/// (and against each other) before anything is solved, the requested sweep built and its work bounded.
+/// Outputs are written all or nothing at the end (`outputs.commit()`).
+struct SweepRun {
+  io::Scene scene;
+  io::OutputSet outputs;
+  io::Sweep sweep;
+  std::vector<double> inputs;  // the sweep's input values, internal units
 
-  Outputs(const io::Scene& scene, const Options& o) : set(files_read(scene)) {
-    if (!o.csv.empty()) csv = set.add("--csv", o.csv);
-    if (!o.plot.empty()) plot = set.add("--plot", o.plot);
-    if (!o.draw.empty()) draw = set.add("--draw", o.draw);
+  /// `output_files`: (option, path) of every output the command may write; path "" for one not given.
+  SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
+      : scene(read_scene(r.scene)), outputs(files_read(scene)) {
+    g_doing = "checking the output files";
+    for (const auto& [option, path] : output_files)
+      if (!path.empty()) given_[option] = outputs.add(option, path);
+    sweep = requested_sweep(scene, r);
+    inputs = io::sweep_inputs(sweep);
+    check_work(scene, sweep, inputs, r.max_steps);
   }
 
+  /// Sets the content of the output file named by `option`, if the command line gave one (`make_text` is
+  /// called only then).
+  void set_output(const std::string& option, const std::function<std::string()>& make_text) {
+    const auto it = given_.find(option);
+    if (it != given_.end()) outputs.set(it->second, make_text());
+  }
+
+ private:
+  std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
+
+  static io::Scene read_scene(const std::string& file) {
+    g_doing = "reading the scene";
+    return io::load_scene(file);
+  }
   static std::vector<std::string> files_read(const io::Scene& scene) {
     std::vector<std::string> files{scene.file};
     files.insert(files.end(), scene.files_read.begin(), scene.files_read.end());
     return files;
   }
 };
+
+// ---- messages and reports ---------------------------------------------------------------------------------
 
 std::string fmt(double v, int digits = 6) {
   char buf[64];
@@ -274,29 +285,6 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
   return out;
 }
 
-/// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
-int run_reference(const io::Scene& scene, const io::Sweep& sw, const Options& o, Outputs& out) {
-  const Mechanism<double>& m = scene.mechanism;
-  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
-  ReferenceSweep ref;
-  g_doing = "computing the reference sweep in MPFR";
-  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
-    std::vector<std::string> values;
-    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
-    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
-  } else {
-    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, io::sweep_inputs(sw), o.digits);
-  }
-  g_doing = "writing the output file";
-  out.set.set(*out.csv, reference_csv_text(ref, m));
-  out.set.commit();
-  std::size_t solved = 0;
-  for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
-  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
-            << " poses solved at " << o.digits << " digits, written to " << o.csv << "\n";
-  return solved == ref.poses.size() ? 0 : 1;
-}
-
 /// --interference: contours sampled in world coordinates at every solved pose (solve/interference.hpp); one
 /// line per run of consecutive poses with the same finding, inputs in the file's units.
 std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
@@ -328,19 +316,47 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
   return lines;
 }
 
-int run(const Options& o) {
-  g_doing = "reading the scene";
-  const io::Scene scene = io::load_scene(o.scene);
-  g_doing = "checking the output files";
-  Outputs out(scene, o);
-  if (o.command == "reference") {
-    const io::Sweep sw = requested_sweep(scene, o);
-    check_work(scene, sw, io::sweep_inputs(sw), o);
-    return run_reference(scene, sw, o, out);
-  }
-  const io::Sweep sw = requested_sweep(scene, o);
-  const std::vector<double> inputs = io::sweep_inputs(sw);
-  check_work(scene, sw, inputs, o);
+// ---- rollkin solve ---------------------------------------------------------------------------------------
+
+struct SolveOptions {
+  SweepRequest sweep;
+  std::string csv, plot, draw;
+  bool rates = false, verbose = false, interference = false;
+};
+
+int run_solve(const SolveOptions& o);
+
+Command solve_command(CLI::App& rollkin) {
+  auto o = std::make_shared<SolveOptions>();
+  CLI::App* app = rollkin.add_subcommand("solve", "assemble the mechanism and sweep its input (double precision)");
+  add_sweep_options(*app, o->sweep);
+  add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
+  add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
+  add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at about five poses across the solved range");
+  app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
+  app->add_flag("-v,--verbose", o->verbose, "print the assembly report and how imported contours were converted");
+  app->add_flag("--interference", o->interference,
+                "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
+  app->footer(
+      "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
+      "--step override it), following one branch in both directions from the assembly pose.\n"
+      "CSV columns: angles in degrees, lengths in scene units. Without output options a one-line summary is\n"
+      "printed.\n"
+      "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
+      "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
+      "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
+      "--max-steps: the estimate is the input's travel over the largest sub-step (5 deg for angles) plus the\n"
+      "number of values.\n" +
+      std::string(kExitStatus));
+  return {app, [o] { return run_solve(*o); }};
+}
+
+/// `rollkin solve`: assembly, sweep, outputs, summary on stdout, one line per problem on stderr.
+int run_solve(const SolveOptions& o) {
+  SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}});
+  const io::Scene& scene = run.scene;
+  const io::Sweep& sw = run.sweep;
+  const std::vector<double>& inputs = run.inputs;
   const Mechanism<double>& m = scene.mechanism;
 
   g_doing = "assembling the mechanism";
@@ -362,11 +378,11 @@ int run(const Options& o) {
   g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(sw);
   cli::OutputContext ctx{scene, sw, result, file_values};
-  if (out.csv) out.set.set(*out.csv, cli::csv_text(ctx, o.rates));
-  if (out.plot) out.set.set(*out.plot, cli::plot_svg(ctx));
-  if (out.draw) out.set.set(*out.draw, cli::draw_svg(ctx));
+  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
+  run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
+  run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
   g_doing = "writing the output files";
-  out.set.commit();
+  run.outputs.commit();
   g_doing = "reporting";
 
   std::size_t solved = 0;
@@ -417,29 +433,128 @@ int run(const Options& o) {
   return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
 }
 
+
+// ---- rollkin reference -----------------------------------------------------------------------------------
+
+struct ReferenceOptions {
+  SweepRequest sweep;
+  int digits = 50;  // MPFR precision in decimal digits: 30, 50 or 100
+  std::string csv;
+};
+
+int run_reference(const ReferenceOptions& o);
+
+Command reference_command(CLI::App& rollkin) {
+  auto o = std::make_shared<ReferenceOptions>();
+  CLI::App* app = rollkin.add_subcommand("reference", "the same assembly and sweep in MPFR, written as decimal strings");
+  add_sweep_options(*app, o->sweep);
+  app->add_option_function<double>(
+         "--digits", [o](double d) { o->digits = static_cast<int>(d); },
+         "MPFR precision in decimal digits: 30, 50 or 100 (default 50)")
+      ->type_name("N")
+      ->check(number("30, 50 or 100", [](double d) { return d == 30 || d == 50 || d == 100; }));
+  add_output(*app, "--csv", o->csv, "the poses as decimal strings (required: reference writes a CSV only)")->required();
+  app->footer(
+      "Runs the same assembly and sweep as 'solve' in MPFR and writes the poses as decimal strings (columns as\n"
+      "the solve CSV without link poses): reference data for regression tests and for measuring the double\n"
+      "solver's error.\n" +
+      std::string(kExitStatus));
+  return {app, [o] { return run_reference(*o); }};
+}
+
+/// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
+int run_reference(const ReferenceOptions& o) {
+  SweepRun run(o.sweep, {{"--csv", o.csv}});
+  const io::Scene& scene = run.scene;
+  const io::Sweep& sw = run.sweep;
+  const Mechanism<double>& m = scene.mechanism;
+  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
+  ReferenceSweep ref;
+  g_doing = "computing the reference sweep in MPFR";
+  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
+    std::vector<std::string> values;
+    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
+    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
+  } else {
+    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, run.inputs, o.digits);
+  }
+  g_doing = "writing the output file";
+  run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
+  run.outputs.commit();
+  std::size_t solved = 0;
+  for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
+  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()
+            << " poses solved at " << o.digits << " digits, written to " << o.csv << "\n";
+  return solved == ref.poses.size() ? 0 : 1;
+}
+
+// ---- main: the commands --------------------------------------------------------------------------------
+
+/// CLI11's "The following argument was not expected: X" in rollkin's words: what X was taken for and what
+/// was expected. The arguments are named in command-line order.
+std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command, int argc, char** argv) {
+  const std::vector<std::string> extras = rollkin.remaining(true);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (std::find(extras.begin(), extras.end(), a) == extras.end()) continue;
+    if (a.size() > 1 && a[0] == '-' && !finite_number(a)) {
+      if (!command) return "unknown option \"" + a + "\"; expected a command first";
+      std::string names;
+      for (const CLI::Option* opt : command->get_options())
+        if (!opt->get_positional() && opt != command->get_help_ptr()) names += (names.empty() ? "" : ", ") + opt->get_name();
+      return "unknown option \"" + a + "\" for " + command->get_name() + "; expected one of " + names;
+    }
+    if (!command) return "unknown command \"" + a + "\"";
+    return "unexpected argument \"" + a + "\": " + command->get_name() + " takes one SCENE file";
+  }
+  return {};
+}
+
+/// "rollkin: <what is wrong>" and where to read what is expected; exit status 2.
+int usage_error(const std::string& what, const CLI::App* command, const std::vector<Command>& commands) {
+  std::cerr << "rollkin: " << what << "\n";
+  if (command) {
+    std::cerr << "(rollkin " << command->get_name() << " --help lists its options)\n";
+  } else {
+    std::string names;
+    for (const Command& c : commands) names += (names.empty() ? "" : ", ") + c.app->get_name();
+    std::cerr << "(expected a command: " << names << "; rollkin --help for usage)\n";
+  }
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
+  CLI::App rollkin("rollkin: kinematic analysis of planar mechanisms with rolling pairs", "rollkin");
+  rollkin.set_version_flag("--version", "rollkin " ROLLKIN_VERSION);
+  rollkin.get_formatter()->column_width(24);
+  rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'.\n" +
+                 std::string(kExitStatus));
+  const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin)};
+  const CLI::App* chosen = nullptr;
   try {
-    for (const auto& a : args) {
-      if (a == "--help" || a == "-h" || a == "help") {
-        std::cout << kUsage;
-        return 0;
-      }
-      if (a == "--version") {
-        std::cout << "rollkin " << ROLLKIN_VERSION << "\n";
-        return 0;
-      }
+    try {
+      rollkin.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return rollkin.exit(e);  // --help, --version
+      const std::vector<CLI::App*> given = rollkin.get_subcommands();
+      const CLI::App* command = given.empty() ? nullptr : given.front();
+      const std::string unexpected = dynamic_cast<const CLI::ExtrasError*>(&e) ? unexpected_argument(rollkin, command, argc, argv) : "";
+      return usage_error(unexpected.empty() ? e.what() : unexpected, command, commands);
     }
-    return run(parse_args(args));
+    for (const Command& c : commands)
+      if (c.app->parsed()) {
+        chosen = c.app;
+        return c.run();
+      }
+    return usage_error("missing command", nullptr, commands);
   } catch (const std::bad_alloc&) {
     std::cerr << "rollkin: out of memory while " << g_doing
               << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
     return 3;
   } catch (const UsageError& e) {
-    std::cerr << "rollkin: " << e.what() << "\n(rollkin --help for usage)\n";
-    return 2;
+    return usage_error(e.what(), chosen, commands);
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return 2;

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # End-to-end tests of the rollkin command-line tool.
-#   usage: run_cli_tests.sh PATH/TO/rollkin SOURCE_DIR
+#   usage: run_cli_tests.sh PATH/TO/rollkin SOURCE_DIR [PATH/TO/rollkin_bench]
+# (with the benchmark's path, its command-line options are checked too)
 # Runs in a fresh temporary directory; prints one line per check and "N passed, M failed" last.
 set -u
 BIN=${1:?usage: run_cli_tests.sh ROLLKIN_BINARY SOURCE_DIR}
 SRC=${2:?usage: run_cli_tests.sh ROLLKIN_BINARY SOURCE_DIR}
 case "$BIN" in /*) ;; *) BIN="$PWD/$BIN" ;; esac
 case "$SRC" in /*) ;; *) SRC="$PWD/$SRC" ;; esac
+BENCH=${3:-}
+case "$BENCH" in ""|/*) ;; *) BENCH="$PWD/$BENCH" ;; esac
 EX="$SRC/examples"
 BAD="$SRC/tests/cli/bad"
 
@@ -33,10 +36,42 @@ run() {  # run ARGS...: sets rc, out, err
 # ---- help and version ------------------------------------------------------------------------------
 run --help
 check "--help exits 0" $([ "$rc" -eq 0 ] && grep -q "rollkin solve" out.txt; echo $?)
+check "--help lists the commands solve and reference with a description" \
+  $(grep -Eq "^ +solve +[a-z]" out.txt && grep -Eq "^ +reference +[a-z]" out.txt; echo $?)
 run --version
 check "--version prints the version" $([ "$rc" -eq 0 ] && grep -Eq "^rollkin [0-9]+\.[0-9]+" out.txt; echo $?)
 run frobnicate
 check "unknown command exits 2" $([ "$rc" -eq 2 ]; echo $?)
+check "unknown command: named, with the commands expected" $(grep -q 'unknown command "frobnicate"' err.txt && grep -q "solve, reference" err.txt; echo $?)
+run solve --help
+check "solve --help exits 0 and lists --csv, --max-steps and --interference with a description" \
+  $([ "$rc" -eq 0 ] && grep -Eq "^ +--csv FILE +[a-z]" out.txt && grep -q -- "--max-steps" out.txt && grep -q -- "--interference" out.txt; echo $?)
+run reference --help
+check "reference --help exits 0 and lists --digits and --csv" \
+  $([ "$rc" -eq 0 ] && grep -Eq "^ +--digits N +[A-Za-z]" out.txt && grep -q -- "--csv" out.txt && ! grep -q -- "--plot" out.txt; echo $?)
+run
+check "missing command: exit 2, names the commands" $([ "$rc" -eq 2 ] && grep -q "missing command" err.txt && grep -q "solve, reference" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --frobnicate 3
+check "unknown option: exit 2, names it and the expected options" \
+  $([ "$rc" -eq 2 ] && grep -q 'unknown option "--frobnicate" for solve; expected one of --from, --to' err.txt; echo $?)
+run reference "$EX/paper_fourbar.json" --csv r.csv --plot r.svg
+check "reference --plot: unknown option (reference writes a CSV only)" $([ "$rc" -eq 2 ] && grep -q '"--plot"' err.txt && [ ! -e r.csv ]; echo $?)
+run solve
+check "solve without a scene: exit 2, says SCENE is required" $([ "$rc" -eq 2 ] && grep -q "SCENE is required" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" "$EX/cycloid.json"
+check "two scene files: exit 2, names the second" $([ "$rc" -eq 2 ] && grep -q 'unexpected argument ".*cycloid.json"' err.txt; echo $?)
+for bad in "--step 1x" "--from nan" "--to inf" "--step ''" "--from 1e999"; do
+  eval run solve "\"$EX/paper_fourbar.json\"" $bad --csv num.csv
+  check "solve $bad: exit 2, names the option and expects a number" \
+    $([ "$rc" -eq 2 ] && grep -q "rollkin: ${bad%% *}: expects a number" err.txt && [ ! -e num.csv ]; echo $?)
+done
+run solve "$EX/paper_fourbar.json" --csv
+check "--csv without a value: exit 2, names --csv" $([ "$rc" -eq 2 ] && grep -q -- "--csv" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --csv --rates
+check "--csv followed by an option: exit 2, no file named --rates" \
+  $([ "$rc" -eq 2 ] && grep -q -- '--csv: expects a file name, got the option "--rates"' err.txt && [ ! -e ./--rates ]; echo $?)
+run solve "$EX/paper_fourbar.json" --from=-10 --to -5 --step 5 --csv neg.csv
+check "negative values (--from=-10, --to -5) are values, not options" $([ "$rc" -eq 0 ] && [ "$(awk 'END { print NR - 1 }' neg.csv)" -eq 2 ]; echo $?)
 
 # ---- the paper's example -----------------------------------------------------------------------------
 run solve "$EX/paper_fourbar.json"
@@ -362,6 +397,19 @@ check "corner: stderr names the pair, the contour, the polyline and the input" \
   $(grep -Eq "corner: the contact of pair 'C' reaches a corner of contour 'ground.track' \(entity LWPOLYLINE [0-9A-F]+ at \(3000, 0\) mm in .*scenes_mm.dxf, turning -45 deg; \(3, 0\) in the contour's frame\) at S.s = 3(\.0000000)?[0-9]* m" err.txt; echo $?)
 check "corner: rows before s = 3 ok, the next corner, the rest not_reached" \
   $(awk -F, 'NR > 1 { want = ($1 < 3) ? "ok" : (seen++ ? "not_reached" : "corner"); if ($NF != want) bad = 1 } END { exit bad || !seen }' table.csv; echo $?)
+
+# ---- the benchmark's options (only when its path is given: ctest passes it when the benchmark is built) ----
+if [ -n "$BENCH" ]; then
+  "$BENCH" --help >out.txt 2>err.txt; rc=$?
+  check "rollkin_bench --help exits 0 and lists --repeats" $([ "$rc" -eq 0 ] && grep -q -- "--repeats N" out.txt; echo $?)
+  for bad in x 3x 0 -2 ""; do
+    "$BENCH" --repeats "$bad" --only "no such case" >out.txt 2>err.txt; rc=$?
+    check "rollkin_bench --repeats '$bad': exit 2, names --repeats and what it expects" \
+      $([ "$rc" -eq 2 ] && grep -q "^rollkin_bench: --repeats: expects a whole number" err.txt; echo $?)
+  done
+  "$BENCH" --frobnicate >out.txt 2>err.txt; rc=$?
+  check "rollkin_bench with an unknown option: exit 2, names it" $([ "$rc" -eq 2 ] && grep -q -- "--frobnicate" err.txt; echo $?)
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
