@@ -203,3 +203,27 @@ BOOST_AUTO_TEST_CASE(scaled_up_radii_give_an_exact_half_ellipse) {
   const V t0 = segs.front().points[1] - segs.front().points[0], t1 = segs.back().points[2] - segs.back().points[1];
   BOOST_TEST(std::abs(t0.x() * t1.y() - t0.y() * t1.x()) / (t0.norm() * t1.norm()) < 1e-15);
 }
+
+// Radii so small that lambda = (x1/rx)^2 + (y1/ry)^2 overflows (fuzz_svg: NaN radii, then a NaN cast to int):
+// scaled up they span the chord, the half circle of diameter (0, 0)-(10, 10); radii whose ratio overflows
+// leave the chord itself.
+BOOST_AUTO_TEST_CASE(tiny_radii_give_the_half_circle_over_the_chord) {
+  for (const std::string d : {"M0 0 A1e-300 1e-300 45 1 1 10 10", "M0 0 A1e-300 1e-300 0 0 0 10 10"}) {
+    BOOST_TEST_CONTEXT(d) {
+      const auto segs = parse(d)[0].segments;
+      BOOST_REQUIRE_EQUAL(segs.size(), 2u);
+      for (const auto& s : segs) {
+        BOOST_REQUIRE_EQUAL(s.weights.size(), 3u);
+        for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {  // the rational quadratic at t
+          const double b0 = (1 - t) * (1 - t), b1 = 2 * t * (1 - t), b2 = t * t;
+          const double w = b0 * s.weights[0] + b1 * s.weights[1] + b2 * s.weights[2];
+          const V p = (b0 * s.weights[0] * s.points[0] + b1 * s.weights[1] * s.points[1] + b2 * s.weights[2] * s.points[2]) / w;
+          BOOST_TEST(std::abs((p - V(5, 5)).norm() - std::sqrt(50.0)) < 1e-13);
+        }
+      }
+    }
+  }
+  const auto flat = parse("M0 0 A1e300 1e-300 30 0 1 10 10")[0].segments;
+  BOOST_REQUIRE_EQUAL(flat.size(), 1u);
+  BOOST_TEST(flat[0].points.size() == 2u);
+}

@@ -43,10 +43,17 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   // Scaled up, the radii span the chord exactly: the centre is the chord's midpoint (k = 0 below), which
   // F.6.5.2 would only reach through sqrt(round-off), an error of sqrt(eps) in the centre.
   const double lambda = x1 * x1 / (rx * rx) + y1 * y1 / (ry * ry);
-  if (lambda >= 1) {
+  if (std::isinf(lambda)) {  // tiny radii (1e-300): rx sqrt(lambda) = hypot(x1, y1 rx / ry) without overflow
+    const double aspect = ry / rx;
+    rx = std::hypot(x1, y1 / aspect);
+    ry = rx * aspect;
+  } else if (lambda >= 1) {
     rx *= std::sqrt(lambda);
     ry *= std::sqrt(lambda);
   }
+  // Radii whose ratio over- or underflows (1e300 against 1e-300) leave no ellipse to evaluate: the arc is
+  // then as flat as its chord (F.6.6's straight line is the limit).
+  if (!(std::isfinite(rx) && std::isfinite(ry) && rx > 0 && ry > 0)) return {Segment{{a.from, a.to}, {}}};
   // F.6.5.2: centre in the ellipse's axes; the sign picks one of the two candidate centres.
   const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
   const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
