@@ -178,4 +178,25 @@ template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const K
   return pose;
 }
 
+/// Spatial twist (v, omega) of every link in the world frame, per unit of the rates qdot: a world point P
+/// moving with link i has velocity v_i + omega_i J P. Down the spanning tree, with lambda_j the pair's
+/// spatial twists in its link A's frame (pair.hpp) and link_poses' `pose`:
+///   forward edge (parent A, child B, T_B = T_A E):      V_B = V_A + Ad_{T_A} (sum_j lambda_j qdot_j)
+///   backward edge (parent B, child A, T_A = T_B E^-1):  V_A = V_B - Ad_{T_A} (sum_j lambda_j qdot_j)
+/// (the second from d(E^-1) E = -Ad_{E^-1}(dE E^-1), as loop_step, and Ad_{T_B} Ad_{E^-1} = Ad_{T_A}).
+template <class S> std::vector<Twist<S>> link_twists(const Mechanism<S>& m, const KinematicsData<S>& d,
+                                                     const std::vector<SE2<S>>& pose, const VectorX<S>& qdot) {
+  std::vector<Twist<S>> twist(m.links.size(), Twist<S>::Zero());
+  for (int i : m.tree_order) {
+    if (i == m.ground) continue;
+    const LoopEdge e = m.tree[i].edge;
+    const Pair<S>& p = m.pairs[e.pair];
+    Twist<S> lambda = Twist<S>::Zero();
+    for (int j = 0; j < p.variable_count(); ++j) lambda += d.pairs[e.pair].twist[j] * qdot(p.first_variable + j);
+    const int parent = m.tree[i].parent;
+    twist[i] = twist[parent] + (e.forward ? pose[parent].adjoint(lambda) : Twist<S>(-pose[i].adjoint(lambda)));
+  }
+  return twist;
+}
+
 }  // namespace rollkin

@@ -3,6 +3,7 @@
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
 //                       [--rates] [--verbose] [--interference] [--max-steps N]
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] [--max-steps N] --csv FILE
+//   rollkin centrodes SCENE --links A B [--from V --to V --step V] [--max-steps N] --out PREFIX
 //   rollkin --help | --version;  rollkin COMMAND --help
 //
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
@@ -209,6 +210,19 @@ struct SweepRun {
   }
 };
 
+/// Assembles the scene's mechanism into q (sd ready for sweep()). Inconsistent constraints at assembly are a
+/// problem of the scene (sizes, frames, values), not a motion limit: an InputError (exit 2, nothing written).
+SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q) {
+  g_doing = "assembling the mechanism";
+  q = scene.guess;
+  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+  if (assembly.status == SolveStatus::CannotAssemble)
+    throw InputError(scene.file, "pairs",
+                     "the mechanism cannot be assembled: " + assembly.detail +
+                         "; expected pair frames, contour sizes and \"values\" that let every loop close");
+  return assembly;
+}
+
 // ---- messages and reports ---------------------------------------------------------------------------------
 
 std::string fmt(double v, int digits = 6) {
@@ -359,18 +373,10 @@ int run_solve(const SolveOptions& o) {
   const std::vector<double>& inputs = run.inputs;
   const Mechanism<double>& m = scene.mechanism;
 
-  g_doing = "assembling the mechanism";
   SolveData<double> sd(m);
-  VectorX<double> q = scene.guess;
-  const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
-  const cli::AssemblyRank ar = cli::full_rank(m, sd);
-  // Inconsistent constraints at assembly are a problem of the scene (sizes, frames, values), not a motion
-  // limit: treated like any other bad input (exit 2, nothing written, no report left on stdout).
-  if (assembly.status == SolveStatus::CannotAssemble)
-    throw InputError(scene.file, "pairs",
-                     "the mechanism cannot be assembled: " + assembly.detail +
-                         "; expected pair frames, contour sizes and \"values\" that let every loop close");
-  if (o.verbose) print_assembly(scene, assembly, ar);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  if (o.verbose) print_assembly(scene, assembly, cli::full_rank(m, sd));
   g_doing = "solving the sweep";
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
 
@@ -488,6 +494,88 @@ int run_reference(const ReferenceOptions& o) {
   return solved == ref.poses.size() ? 0 : 1;
 }
 
+// ---- rollkin centrodes -----------------------------------------------------------------------------------
+
+struct CentrodesOptions {
+  SweepRequest sweep;
+  std::vector<std::string> links;  // A B
+  std::string out;                 // prefix of PREFIX.A.txt and PREFIX.B.txt
+};
+
+int run_centrodes(const CentrodesOptions& o);
+
+Command centrodes_command(CLI::App& rollkin) {
+  auto o = std::make_shared<CentrodesOptions>();
+  CLI::App* app = rollkin.add_subcommand("centrodes", "loci of the instant centre of two links' relative motion, as point files");
+  add_sweep_options(*app, o->sweep);
+  app->add_option("--links", o->links, "the two links A and B (names in the scene)")->expected(2)->required()->type_name("A B");
+  add_output(*app, "--out", o->out, "prefix of the files PREFIX.A.txt (centrode in A's frame) and PREFIX.B.txt")
+      ->required()
+      ->type_name("PREFIX");
+  app->footer(
+      "Sweeps the scene like 'solve' and writes, for every input value in sweep order, the instant centre of\n"
+      "the motion of link B relative to link A (from the velocity solution) in A's frame (PREFIX.A.txt: the\n"
+      "fixed centrode when A is the ground) and in B's frame (PREFIX.B.txt), in the point-file format a\n"
+      "\"samples\" contour reads: rolled on each other as a rolling pair they reproduce the relative motion.\n"
+      "A value where the centre is at infinity (pure relative translation) or that was not solved is a comment\n"
+      "line in both files and a line on stderr (exit status 1).\n" +
+      std::string(kExitStatus));
+  return {app, [o] { return run_centrodes(*o); }};
+}
+
+/// A link of the scene named on the command line (--links).
+int named_link(const Mechanism<double>& m, const std::string& name) {
+  const int i = m.find_link(name);
+  if (i >= 0) return i;
+  std::string names;
+  for (const Link& l : m.links) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+  throw UsageError("--links: no link \"" + name + "\" in the scene; its links are " + names);
+}
+
+/// `rollkin centrodes`: the sweep, then the instant centre at every pose, written as two point files.
+int run_centrodes(const CentrodesOptions& o) {
+  if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
+  const std::string file_a = o.out + "." + o.links[0] + ".txt", file_b = o.out + "." + o.links[1] + ".txt";
+  SweepRun run(o.sweep, {{"--out (link A)", file_a}, {"--out (link B)", file_b}});
+  const io::Scene& scene = run.scene;
+  const Mechanism<double>& m = scene.mechanism;
+  const int a = named_link(m, o.links[0]), b = named_link(m, o.links[1]);
+
+  SolveData<double> sd(m);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "solving the sweep";
+  const SweepResult<double> result = sweep(m, sd, q, assembly, run.sweep.driver, run.inputs);
+  g_doing = "computing the instant centres";
+  const std::vector<InstantCentre<double>> centres = centrodes(m, sd.kin, result, a, b);
+
+  g_doing = "building the output files";
+  const std::vector<double> file_values = io::sweep_values(run.sweep);
+  const cli::OutputContext ctx{scene, run.sweep, result, file_values};
+  run.set_output("--out (link A)", [&] { return cli::centrode_text(ctx, centres, a, b, true); });
+  run.set_output("--out (link B)", [&] { return cli::centrode_text(ctx, centres, a, b, false); });
+  g_doing = "writing the output files";
+  run.outputs.commit();
+
+  std::size_t finite = 0;
+  std::vector<std::string> problems;
+  for (const auto& l : result.limits) problems.push_back(limit_line(scene, run.sweep, l));
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    if (centres[k].finite) {
+      ++finite;
+    } else if (result.poses[k].report.has_pose()) {
+      problems.push_back("centre at infinity at " + input_text(scene, run.sweep, run.inputs[k]) +
+                         ": link '" + o.links[1] + "' translates relative to link '" + o.links[0] +
+                         "' (no point written; a comment line marks the place in both files)");
+    }
+  }
+  std::cout << fs::path(scene.file).filename().string() << ": " << finite << "/" << centres.size()
+            << " instant centres of '" << o.links[1] << "' relative to '" << o.links[0] << "' written to " << file_a
+            << " and " << file_b << "\n";
+  for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
+  return finite == centres.size() ? 0 : 1;
+}
+
 // ---- main: the commands --------------------------------------------------------------------------------
 
 /// CLI11's "The following argument was not expected: X" in rollkin's words: what X was taken for and what
@@ -531,7 +619,7 @@ int main(int argc, char** argv) {
   rollkin.get_formatter()->column_width(24);
   rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'.\n" +
                  std::string(kExitStatus));
-  const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin)};
+  const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin), centrodes_command(rollkin)};
   const CLI::App* chosen = nullptr;
   try {
     try {

@@ -89,6 +89,33 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
   return csv.to_string();
 }
 
+std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b,
+                          bool in_a) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const std::string& frame = m.links[in_a ? a : b].name;
+  const std::string unit = ctx.scene.unit_label(ctx.sweep.variable);
+  auto input = [&](std::size_t k) { return ctx.sweep.input + " = " + io::format_double(ctx.inputs[k]) + (unit.empty() ? "" : " " + unit); };
+  std::string text = "# rollkin centrodes: instant centre of link '" + m.links[b].name + "' relative to link '" +
+                     m.links[a].name + "', in link '" + frame + "''s frame (" + ctx.scene.length_unit + ")\n" +
+                     "# scene " + base_name(ctx.scene.file) + "; " + ctx.sweep.input + " from " + io::format_double(ctx.sweep.from) +
+                     " to " + io::format_double(ctx.sweep.to) + " step " + io::format_double(ctx.sweep.step) +
+                     "; one point per input value, in sweep order\nx y\n";
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    const InstantCentre<double>& c = centres[k];
+    const SweepPose<double>& p = ctx.result.poses[k];
+    if (c.finite) {
+      const Vec2<double>& x = in_a ? c.in_a : c.in_b;
+      text += io::format_double(x.x()) + " " + io::format_double(x.y()) + "\n";
+    } else if (!p.report.has_pose()) {
+      text += "# " + input(k) + ": not solved (" + to_string(p.report.status) + ")\n";
+    } else {
+      text += "# " + input(k) + ": centre at infinity (pure relative translation, direction (" +
+              io::format_double(c.direction.x()) + ", " + io::format_double(c.direction.y()) + ") in the world frame)\n";
+    }
+  }
+  return text;
+}
+
 std::string plot_svg(const OutputContext& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;

@@ -2,6 +2,7 @@
 // mechanism, each built in memory as text (the caller writes them atomically once everything succeeded).
 #pragma once
 
+#include "rollkin/centrodes.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -23,6 +24,12 @@ std::string csv_text(const OutputContext& ctx, bool rates);
 /// SVG chart(s) of the non-input pair variables against the input: angles in one chart, lengths and
 /// unitless parameters in a second one below it (when there are any).
 std::string plot_svg(const OutputContext& ctx);
+
+/// A centrode as a point file (the format a `samples` contour reads): the instant centre of link b
+/// relative to link a, in link a's frame (in_a) or link b's, one line "x y" per input value with a finite
+/// centre, in sweep order; a comment line for each value without one (centre at infinity, not solved).
+std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b,
+                          bool in_a);
 
 /// SVG drawing of the mechanism at up to five poses spread over the solved ones.
 std::string draw_svg(const OutputContext& ctx);
