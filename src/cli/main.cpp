@@ -55,6 +55,7 @@ struct Options {
   std::optional<double> from, to, step;
   std::string csv, plot, draw;
   bool rates = false, verbose = false, interference = false;
+  bool analysis = false;  // --analysis: contact analysis columns in the CSV (docs/analysis.md)
   double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
 };
 
@@ -127,6 +128,7 @@ Options parse_args(const std::vector<std::string>& args) {
     else if (a == "--plot") set_path(o.plot);
     else if (a == "--draw") set_path(o.draw);
     else if (a == "--rates") o.rates = true;
+    else if (a == "--analysis" && o.command == "solve") o.analysis = true;
     else if (a == "--interference" && o.command == "solve") o.interference = true;
     else if (a == "--max-steps") {
       o.max_steps = parse_value(a, value());
@@ -356,7 +358,7 @@ int run(const Options& o) {
   g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(sw);
   cli::OutputContext ctx{scene, sw, result, file_values};
-  if (out.csv) out.set.set(*out.csv, cli::csv_text(ctx, o.rates));
+  if (out.csv) out.set.set(*out.csv, cli::csv_text(ctx, o.rates, o.analysis));
   if (out.plot) out.set.set(*out.plot, cli::plot_svg(ctx));
   if (out.draw) out.set.set(*out.draw, cli::draw_svg(ctx));
   g_doing = "writing the output files";
