@@ -5,6 +5,7 @@
 //    face tilted by beta from the perpendicular to the stroke, phi = |beta| (0 for a perpendicular face);
 //  - sliding and rolling speed of that cam against a numeric derivation from positions alone (central
 //    differences of the arc-length positions R u and r v of the contact on the two circles);
+//  - the same against differences of the closed-form arc length for an elliptic cam under a flat face;
 //  - the paper's example (examples/paper_fourbar.json): sliding zero to round-off at both rolling pairs;
 //  - curvatures against closed forms: parabola 2a / (1 + 4 a^2 x^2)^(3/2), circles 1/r, a ring -1/R,
 //    ellipse AB / (A^2 sin^2 t + B^2 cos^2 t)^(3/2) (t the eccentric anomaly);
@@ -158,6 +159,49 @@ BOOST_AUTO_TEST_CASE(cam_sliding_and_rolling_speed_against_differences_of_positi
                                                                               << " (relative to R); slide-to-roll relative " << worst_ratio);
   BOOST_TEST(worst_sliding < 1e-7);
   BOOST_TEST(worst_ratio < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(elliptic_cam_sliding_against_differences_of_arc_lengths) {
+  // A non-circular cam: an ellipse (A = 3, B = 2) turning about its centre under a flat face perpendicular
+  // to the stroke. The contact's arc-length positions are s_A(u) on the ellipse (elliptic integral, closed
+  // form) and v on the face; sliding = s_A' + v', rolling speed = (s_A' - v') / 2, by central differences.
+  const double A = 3, B = 2, h = 1e-4;
+  MechanismBuilder<double> b;
+  const int ground = b.link("ground", true), cam = b.link("cam"), follower = b.link("follower");
+  const int disk = b.contour(cam, "ellipse", Ellipse<double>(A, B));
+  const int face = b.contour(follower, "face", Line<double>(-10, 10), SE2<double>(-M_PI / 2, Vec2<double>(0, 0)));
+  const int pivot = b.revolute("pivot", ground, cam, SE2<double>(), SE2<double>(), "theta");
+  b.prismatic("guide", ground, follower, SE2<double>(M_PI / 2, Vec2<double>(0, 0)), SE2<double>(), "s");
+  b.contact("contact", false, disk, face, "u", "v");
+  b.driver(pivot);
+  Fixture<double> f{b.build(), VectorX<double>(4), {}};
+  f.guess << 0, B, M_PI / 2, 0;  // the ellipse's top vertex (0, B) under the face
+  std::vector<double> inputs;
+  for (int d = -175; d <= 175; d += 10)
+    for (int j = -1; j <= 1; ++j) inputs.push_back(d * kDeg + j * h);
+  const auto res = assemble_and_sweep(f, inputs);
+  BOOST_TEST_REQUIRE(res.all_solved());
+  const auto an = analyse_sweep(f.mech, res);
+  const Contour<double>& ellipse = f.mech.contours[disk];
+  double worst_sliding = 0, worst_ratio = 0, worst_angle = 0, worst_kappa = 0;
+  for (std::size_t k = 1; k < inputs.size(); k += 3) {
+    const double sa = (ellipse.arc_length(res.poses[k].q(2), res.poses[k + 1].q(2)) -
+                       ellipse.arc_length(res.poses[k].q(2), res.poses[k - 1].q(2))) / (2 * h);
+    const double sb = (res.poses[k + 1].q(3) - res.poses[k - 1].q(3)) / (2 * h);
+    const ContactAnalysis<double>& c = an[k].contacts.at(0);
+    const double sliding = sa + sb, rolling = (sa - sb) / 2;
+    worst_sliding = std::max(worst_sliding, std::abs(c.sliding - sliding) / A);
+    worst_ratio = std::max(worst_ratio, std::abs(c.slide_to_roll - sliding / rolling) / std::abs(sliding / rolling));
+    if (!std::isnan(c.pressure_angle)) worst_angle = std::max(worst_angle, c.pressure_angle);
+    worst_kappa = std::max(worst_kappa, std::abs(c.kappa1 / ellipse_curvature(A, B, res.poses[k].q(2)) - 1));
+    BOOST_TEST(c.kappa2 == 0.0);
+  }
+  BOOST_TEST_MESSAGE("elliptic cam, flat face: sliding vs differences of arc lengths " << worst_sliding << " (relative to A), slide-to-roll "
+                     << worst_ratio << " relative, pressure angle up to " << worst_angle << " rad, curvature " << worst_kappa);
+  BOOST_TEST(worst_sliding < 1e-7);
+  BOOST_TEST(worst_ratio < 1e-6);
+  BOOST_TEST(worst_angle < 1e-13);
+  BOOST_TEST(worst_kappa < 1e-14);
 }
 
 BOOST_AUTO_TEST_CASE(paper_example_rolls_without_sliding_and_curvatures_match_closed_forms) {
