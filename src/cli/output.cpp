@@ -42,7 +42,7 @@ std::string strip_header(const std::string& svg) {
   return at == std::string::npos ? svg : svg.substr(at);
 }
 
-/// The contact pairs (cam and rolling) and the moving links, in the order of the analysis columns.
+/// The contact pairs (cam and rolling), in the order of the analysis columns.
 std::vector<int> contact_pairs(const Mechanism<double>& m) {
   std::vector<int> k;
   for (std::size_t p = 0; p < m.pairs.size(); ++p)
