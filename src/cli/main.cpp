@@ -335,7 +335,7 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
 struct SolveOptions {
   SweepRequest sweep;
   std::string csv, plot, draw;
-  bool rates = false, verbose = false, interference = false;
+  bool rates = false, analysis = false, verbose = false, interference = false;
 };
 
 int run_solve(const SolveOptions& o);
@@ -348,6 +348,9 @@ Command solve_command(CLI::App& rollkin) {
   add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
   add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at about five poses across the solved range");
   app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
+  app->add_flag("--analysis", o->analysis,
+                "add the contact analysis columns to the CSV: pressure angle, sliding, curvatures, link accelerations "
+                "(docs/analysis.md)");
   app->add_flag("-v,--verbose", o->verbose, "print the assembly report and how imported contours were converted");
   app->add_flag("--interference", o->interference,
                 "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
@@ -384,7 +387,7 @@ int run_solve(const SolveOptions& o) {
   g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(sw);
   cli::OutputContext ctx{scene, sw, result, file_values};
-  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
+  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates, o.analysis); });
   run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
   run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
   g_doing = "writing the output files";

@@ -1,5 +1,6 @@
 #include "output.hpp"
 
+#include "rollkin/analysis.hpp"
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/svg.hpp"
 #include "rollkin/io/units.hpp"
@@ -41,9 +42,49 @@ std::string strip_header(const std::string& svg) {
   return at == std::string::npos ? svg : svg.substr(at);
 }
 
+/// The contact pairs (cam and rolling), in the order of the analysis columns.
+std::vector<int> contact_pairs(const Mechanism<double>& m) {
+  std::vector<int> k;
+  for (std::size_t p = 0; p < m.pairs.size(); ++p)
+    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
+  return k;
+}
+const char* const kContactColumns[] = {"pressure_angle", "sliding", "slide_to_roll", "kappa1", "kappa2", "relative_curvature"};
+const std::size_t kContactColumnCount = sizeof(kContactColumns) / sizeof(kContactColumns[0]);
+
+std::size_t analysis_column_count(const Mechanism<double>& m) {
+  return contact_pairs(m).size() * kContactColumnCount + (m.links.size() - 1);
+}
+
+/// --analysis columns (docs/analysis.md): per contact pair P the P.<quantity> columns, per moving link
+/// <link>.accel.
+void analysis_columns(const Mechanism<double>& m, std::vector<std::string>& cols) {
+  for (int k : contact_pairs(m))
+    for (const char* q : kContactColumns) cols.push_back(m.pairs[k].name + "." + q);
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) cols.push_back(m.links[l].name + ".accel");
+}
+
+/// The analysis of one pose in output units: pressure angle in degrees, sliding per unit of the input's
+/// output unit (per degree for an angle input, like the rate columns), curvatures in 1/scene unit, angular
+/// accelerations in degrees per input unit squared.
+void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, std::vector<double>& row) {
+  const double degrees = io::from_radians(1.0, kOutputAngle);
+  for (const ContactAnalysis<double>& c : a.contacts) {
+    row.push_back(c.pressure_angle * degrees);
+    row.push_back(c.sliding / in_scale);
+    row.push_back(c.slide_to_roll);
+    row.push_back(c.kappa1);
+    row.push_back(c.kappa2);
+    row.push_back(c.relative_curvature);
+  }
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_acceleration[l] * degrees / (in_scale * in_scale));
+}
+
 }  // namespace
 
-std::string csv_text(const OutputContext& ctx, bool rates) {
+std::string csv_text(const OutputContext& ctx, bool rates, bool analysis) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;
   std::vector<std::string> cols{m.variables[input].name};
@@ -60,9 +101,11 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
     cols.push_back(l.name + ".y");
     cols.push_back(l.name + ".angle");
   }
+  if (analysis) analysis_columns(m, cols);
   cols.push_back("residual");
   io::CsvWriter csv(cols, "status");
   KinematicsData<double> kin(m);
+  AnalysisData<double> analysis_data(m);
   const double in_scale = out_scale(m, input);
   // The input column from the requested values in file units (exact grid values for a "deg" file).
   const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle && m.variables[input].kind == ParamKind::Angle;
@@ -82,6 +125,10 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
       row.push_back(ok ? lp[l].translation().x() : kNaN);
       row.push_back(ok ? lp[l].translation().y() : kNaN);
       row.push_back(ok ? io::from_radians(lp[l].angle(), kOutputAngle) : kNaN);
+    }
+    if (analysis) {
+      if (ok) analysis_values(m, analyse_pose(m, pose.q, pose.qdot, analysis_data), in_scale, row);
+      else row.resize(row.size() + analysis_column_count(m), kNaN);
     }
     row.push_back(ok ? pose.report.residual : kNaN);
     csv.add_row(row, to_string(pose.report.status));

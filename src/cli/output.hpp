@@ -18,8 +18,10 @@ struct OutputContext {
 };
 
 /// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
-/// <link>.x, <link>.y, <link>.angle, residual, status. Angles in degrees, lengths in scene units.
-std::string csv_text(const OutputContext& ctx, bool rates);
+/// <link>.x, <link>.y, <link>.angle, (analysis) per cam or rolling pair P the columns P.pressure_angle,
+/// P.sliding, P.slide_to_roll, P.kappa1, P.kappa2, P.relative_curvature and per moving link <link>.accel
+/// (docs/analysis.md), residual, status. Angles in degrees, lengths in scene units, rates per input unit.
+std::string csv_text(const OutputContext& ctx, bool rates, bool analysis = false);
 
 /// SVG chart(s) of the non-input pair variables against the input: angles in one chart, lengths and
 /// unitless parameters in a second one below it (when there are any).
