@@ -29,6 +29,15 @@ namespace {
 
 const double kDeg = M_PI / 180;
 
+/// Inputs from `from` to `to` degrees in steps of `step` degrees, each with its central-difference neighbours
+/// at -h and +h (radians): pose 3k + 1 is the value, poses 3k and 3k + 2 its neighbours.
+std::vector<double> with_neighbours(int from, int to, int step, double h) {
+  std::vector<double> inputs;
+  for (int d = from; d <= to; d += step)
+    for (int j = -1; j <= 1; ++j) inputs.push_back(d * kDeg + j * h);
+  return inputs;
+}
+
 /// Eccentric circular cam (radius R, centre e from the pivot at the origin along the cam's x-axis; input
 /// theta, the cam's angle) driving a follower that translates along the world y-axis through the pivot.
 /// The follower ends in a roller of radius r fixed to it (roller = true), or in a flat face through its
@@ -140,9 +149,7 @@ BOOST_AUTO_TEST_CASE(cam_sliding_and_rolling_speed_against_differences_of_positi
   // rolling speed = (R u' - r v') / 2, here from central differences of the solved positions.
   const double R = 3, e = 1, r = 1, h = 1e-4;
   const auto f = eccentric_cam<double>(R, e, true, r);
-  std::vector<double> inputs;
-  for (int d = -170; d <= 170; d += 20)
-    for (int j = -1; j <= 1; ++j) inputs.push_back(d * kDeg + j * h);
+  const std::vector<double> inputs = with_neighbours(-170, 170, 20, h);
   const auto res = assemble_and_sweep(f, inputs);
   BOOST_TEST_REQUIRE(res.all_solved());
   const auto an = analyse_sweep(f.mech, res);
@@ -176,9 +183,7 @@ BOOST_AUTO_TEST_CASE(elliptic_cam_sliding_against_differences_of_arc_lengths) {
   b.driver(pivot);
   Fixture<double> f{b.build(), VectorX<double>(4), {}};
   f.guess << 0, B, M_PI / 2, 0;  // the ellipse's top vertex (0, B) under the face
-  std::vector<double> inputs;
-  for (int d = -175; d <= 175; d += 10)
-    for (int j = -1; j <= 1; ++j) inputs.push_back(d * kDeg + j * h);
+  const std::vector<double> inputs = with_neighbours(-175, 175, 10, h);
   const auto res = assemble_and_sweep(f, inputs);
   BOOST_TEST_REQUIRE(res.all_solved());
   const auto an = analyse_sweep(f.mech, res);
@@ -277,9 +282,7 @@ BOOST_AUTO_TEST_CASE(curvatures_of_ellipses_and_of_a_ring) {
 BOOST_AUTO_TEST_CASE(angular_accelerations_match_differences_of_angular_velocities) {
   const auto f = paper_fourbar<double>();
   const double h = 1e-4;
-  std::vector<double> inputs;
-  for (int d = -40; d <= 90; d += 10)
-    for (int j = -1; j <= 1; ++j) inputs.push_back(d * kDeg + j * h);
+  const std::vector<double> inputs = with_neighbours(-40, 90, 10, h);
   const auto res = assemble_and_sweep(f, inputs);
   BOOST_TEST_REQUIRE(res.all_solved());
   const auto an = analyse_sweep(f.mech, res);

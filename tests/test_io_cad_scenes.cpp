@@ -47,15 +47,20 @@ io::Scene scene_from(const std::string& name, const std::string& text) {
   return io::load_scene(write_text(scratch_dir("io_cad_scenes") / name, text));
 }
 
-/// The scene's own sweep, solved; every pose must be ok.
-SweepResult<double> solved(const io::Scene& s) {
+/// The scene's own sweep from its assembly, limits allowed.
+SweepResult<double> swept(const io::Scene& s) {
   BOOST_REQUIRE(s.sweep.has_value());
   const Mechanism<double>& m = s.mechanism;
   SolveData<double> sd(m);
   VectorX<double> q = s.guess;
   const SolveReport<double> rep = assemble(m, q, sd, s.held);
   BOOST_REQUIRE_MESSAGE(rep.ok(), "assembly: " << to_string(rep.status));
-  SweepResult<double> r = sweep(m, sd, q, rep, s.sweep->driver, io::sweep_inputs(*s.sweep));
+  return sweep(m, sd, q, rep, s.sweep->driver, io::sweep_inputs(*s.sweep));
+}
+
+/// The scene's own sweep, solved; every pose must be ok.
+SweepResult<double> solved(const io::Scene& s) {
+  SweepResult<double> r = swept(s);
   BOOST_REQUIRE(r.all_solved());
   return r;
 }
@@ -189,16 +194,6 @@ BOOST_AUTO_TEST_CASE(nurbs_circle_rolling_in_a_ring_is_the_hypocycloid) {
 // ---- corners: a contact stops where its contour's tangent jumps ---------------------------------------------
 
 namespace {
-
-/// The scene's own sweep from its assembly, limits allowed.
-SweepResult<double> swept(const io::Scene& s) {
-  const Mechanism<double>& m = s.mechanism;
-  SolveData<double> sd(m);
-  VectorX<double> q = s.guess;
-  const SolveReport<double> rep = assemble(m, q, sd, s.held);
-  BOOST_REQUIRE_MESSAGE(rep.ok(), "assembly: " << to_string(rep.status));
-  return sweep(m, sd, q, rep, s.sweep->driver, io::sweep_inputs(*s.sweep));
-}
 
 /// Checks a sweep of the cycloid scene (disk r = 1, centre at x = s) whose contact must stop at a corner at
 /// s = corner_input: every pose before it ok with the rolling closed form psi - psi_0 = -s, the first pose

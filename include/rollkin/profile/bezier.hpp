@@ -175,6 +175,10 @@ template <class S> class BezierPath {
   /// The joints where the tangent direction jumps, in joint order (a closed path's last joint, at u = 0,
   /// comes last).
   const std::vector<PathCorner<S>>& corners() const { return corners_; }
+  /// Whether the joint at the start of segment `piece` is a corner.
+  bool corner_at(std::size_t piece) const {
+    return std::any_of(corners_.begin(), corners_.end(), [&](const PathCorner<S>& c) { return c.piece == piece; });
+  }
 
   Jet<S> jet(const S& u, int order) const {
     const S w = domain().wrap(u);
@@ -349,7 +353,7 @@ template <class S> class BezierPath {
     const std::size_t n = segments_.size();
     for (std::size_t j = 0; j < joint_count(); ++j) {
       const std::size_t next = (j + 1) % n;
-      if (std::any_of(corners_.begin(), corners_.end(), [&](const PathCorner<S>& c) { return c.piece == next; })) continue;
+      if (corner_at(next)) continue;
       const Jet<S> l = segment_jet(j, S(1), 2), r = segment_jet(next, S(0), 2);
       if (!nearly_equal(l.d1, r.d1) || !nearly_equal(l.d2, r.d2)) return 1;
     }

@@ -1,7 +1,6 @@
 // Checks shared by the contour readers (see contour_reader.hpp).
 #include "contour_reader.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace rollkin::io {
@@ -126,7 +125,7 @@ std::vector<std::string> describe_joints(const BezierPath<double>& path, const J
   const double extent = path.total_length();
   for (std::size_t j = 0; j < joints; ++j) {
     const std::size_t next = (j + 1) % n;
-    if (std::any_of(path.corners().begin(), path.corners().end(), [&](const auto& c) { return c.piece == next; })) continue;
+    if (path.corner_at(next)) continue;
     const double kl = contour_point(path.segment_jet(j, 1.0, 2), 2).curvature();
     const double kr = contour_point(path.segment_jet(next, 0.0, 2), 2).curvature();
     if (!std::isfinite(kl) || !std::isfinite(kr)) continue;  // a stationary end: no curvature there
