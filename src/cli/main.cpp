@@ -349,8 +349,8 @@ Command solve_command(CLI::App& rollkin) {
   add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at about five poses across the solved range");
   app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
   app->add_flag("--analysis", o->analysis,
-                "add the contact analysis columns to the CSV: pressure angle, sliding, curvatures, link accelerations "
-                "(docs/analysis.md)");
+                "add the contact analysis columns to the CSV and charts to the plot: pressure angle, sliding, "
+                "curvatures, link accelerations (docs/analysis.md)");
   app->add_flag("-v,--verbose", o->verbose, "print the assembly report and how imported contours were converted");
   app->add_flag("--interference", o->interference,
                 "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
@@ -386,8 +386,9 @@ int run_solve(const SolveOptions& o) {
   // Everything is computed before anything is written, and then written all or nothing.
   g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(sw);
-  cli::OutputContext ctx{scene, sw, result, file_values};
-  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates, o.analysis); });
+  const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, result) : cli::SweepAnalysis{};
+  const cli::OutputContext ctx{scene, sw, result, file_values, o.analysis ? &analysis : nullptr};
+  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
   run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
   run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
   g_doing = "writing the output files";

@@ -7,11 +7,11 @@
 
 #include <Eigen/QR>
 
-#include <cmath>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 
 namespace rollkin::cli {
@@ -82,9 +82,113 @@ void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, 
     if (static_cast<int>(l) != m.ground) row.push_back(a.angular_acceleration[l] * degrees / (in_scale * in_scale));
 }
 
+/// Charts stacked top to bottom in one SVG document (nested <svg> elements); a single chart as it is.
+std::string stack_charts(const std::vector<io::SvgChart>& charts) {
+  if (charts.size() == 1) return charts.front().to_svg();
+  int w = 0, h = 0;
+  for (const io::SvgChart& c : charts) {
+    w = std::max(w, c.width());
+    h += c.height();
+  }
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+                    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
+                    "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
+  int y = 0;
+  for (const io::SvgChart& c : charts) {
+    std::string body = strip_header(c.to_svg());
+    body.insert(4, " x=\"0\" y=\"" + std::to_string(y) + "\"");
+    out += body;
+    y += c.height();
+  }
+  return out + "</svg>\n";
+}
+
+/// One chart against the input with a series per (name, value of a solved pose) pair.
+struct ChartSpec {
+  std::string title, y_label;
+  std::vector<std::string> names;
+  std::function<double(const PoseAnalysis<double>&, std::size_t series)> value;
+};
+
+io::SvgChart analysis_chart(const OutputContext& ctx, const std::vector<double>& x, const ChartSpec& spec) {
+  io::SvgChart chart(760, 360);
+  chart.set_title(base_name(ctx.scene.file) + ": " + spec.title).set_x_label(axis_label(ctx, ctx.sweep.variable))
+      .set_y_label(spec.y_label).set_legend(io::LegendPosition::Outside);
+  for (std::size_t k = 0; k < spec.names.size(); ++k) {
+    io::ChartSeries s;
+    s.name = spec.names[k];
+    s.x = x;
+    for (const auto& a : *ctx.analysis) s.y.push_back(a ? spec.value(*a, k) : kNaN);
+    s.color = io::palette_color(k);
+    chart.add_series(std::move(s));
+  }
+  return chart;
+}
+
+/// The --analysis charts (docs/analysis.md), in the CSV's output units.
+std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::vector<double>& x) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const double degrees = io::from_radians(1.0, kOutputAngle);
+  const double in_scale = out_scale(m, ctx.sweep.variable);
+  const std::string per_input = ctx.scene.unit_label(ctx.sweep.variable);
+  const std::string& len = ctx.scene.length_unit;
+  // Sliding is zero by construction at rolling pairs (docs/analysis.md): charted for cam pairs only.
+  std::vector<std::string> pairs, cams, curvatures, links;
+  std::vector<std::size_t> cam_contact;
+  std::vector<int> moving;
+  for (int k : contact_pairs(m)) {
+    if (m.pairs[k].kind == PairKind::Cam) {
+      cams.push_back(m.pairs[k].name);
+      cam_contact.push_back(pairs.size());
+    }
+    pairs.push_back(m.pairs[k].name);
+    curvatures.push_back(m.pairs[k].name + ".kappa1");
+    curvatures.push_back(m.pairs[k].name + ".kappa2");
+  }
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) {
+      links.push_back(m.links[l].name);
+      moving.push_back(static_cast<int>(l));
+    }
+  std::vector<ChartSpec> specs;
+  if (!pairs.empty())
+    specs.push_back({"pressure angle at the contact pairs", std::string("pressure angle [") + io::unit_label(kOutputAngle) + "]",
+                     pairs, [=](const PoseAnalysis<double>& a, std::size_t k) { return a.contacts[k].pressure_angle * degrees; }});
+  if (!cams.empty()) {
+    specs.push_back({"sliding velocity at the cam pairs (second contour minus first)", "sliding [" + len + " / " + per_input + "]",
+                     cams, [=](const PoseAnalysis<double>& a, std::size_t k) { return a.contacts[cam_contact[k]].sliding / in_scale; }});
+    specs.push_back({"slide-to-roll ratio at the cam pairs", "slide-to-roll", cams,
+                     [=](const PoseAnalysis<double>& a, std::size_t k) { return a.contacts[cam_contact[k]].slide_to_roll; }});
+  }
+  if (!pairs.empty())
+    specs.push_back({"curvature of the contours at the contact", "curvature [1/" + len + "]", curvatures,
+                     [](const PoseAnalysis<double>& a, std::size_t k) {
+                       const ContactAnalysis<double>& c = a.contacts[k / 2];
+                       return k % 2 == 0 ? c.kappa1 : c.kappa2;
+                     }});
+  if (!links.empty())
+    specs.push_back({"angular acceleration of the links",
+                     std::string("angular acceleration [") + io::unit_label(kOutputAngle) + " / " + per_input + "^2]", links,
+                     [=](const PoseAnalysis<double>& a, std::size_t k) {
+                       return a.angular_acceleration[moving[k]] * degrees / (in_scale * in_scale);
+                     }});
+  std::vector<io::SvgChart> charts;
+  for (const ChartSpec& s : specs) charts.push_back(analysis_chart(ctx, x, s));
+  return charts;
+}
+
 }  // namespace
 
-std::string csv_text(const OutputContext& ctx, bool rates, bool analysis) {
+SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result) {
+  AnalysisData<double> data(m);
+  SweepAnalysis out;
+  out.reserve(result.poses.size());
+  for (const SweepPose<double>& p : result.poses)
+    out.push_back(p.report.has_pose() ? std::optional(analyse_pose(m, p.q, p.qdot, data)) : std::nullopt);
+  return out;
+}
+
+std::string csv_text(const OutputContext& ctx, bool rates) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;
   std::vector<std::string> cols{m.variables[input].name};
@@ -101,11 +205,11 @@ std::string csv_text(const OutputContext& ctx, bool rates, bool analysis) {
     cols.push_back(l.name + ".y");
     cols.push_back(l.name + ".angle");
   }
+  const bool analysis = ctx.analysis != nullptr;
   if (analysis) analysis_columns(m, cols);
   cols.push_back("residual");
   io::CsvWriter csv(cols, "status");
   KinematicsData<double> kin(m);
-  AnalysisData<double> analysis_data(m);
   const double in_scale = out_scale(m, input);
   // The input column from the requested values in file units (exact grid values for a "deg" file).
   const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle && m.variables[input].kind == ParamKind::Angle;
@@ -127,7 +231,7 @@ std::string csv_text(const OutputContext& ctx, bool rates, bool analysis) {
       row.push_back(ok ? io::from_radians(lp[l].angle(), kOutputAngle) : kNaN);
     }
     if (analysis) {
-      if (ok) analysis_values(m, analyse_pose(m, pose.q, pose.qdot, analysis_data), in_scale, row);
+      if (const auto& a = (*ctx.analysis)[r]) analysis_values(m, *a, in_scale, row);
       else row.resize(row.size() + analysis_column_count(m), kNaN);
     }
     row.push_back(ok ? pose.report.residual : kNaN);
@@ -192,17 +296,13 @@ std::string plot_svg(const OutputContext& ctx) {
     if (k >= 10) s.dash = "6 3";
     (is_angle ? angles : lengths).add_series(std::move(s));
   }
-  if (n_lengths == 0) return angles.to_svg();
-  if (n_angles == 0) return lengths.to_svg();
-  // Two charts stacked in one document (nested <svg> elements).
-  const int w = angles.width(), h = angles.height() + lengths.height();
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
-                    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
-                    "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
-  std::string top = strip_header(angles.to_svg()), bottom = strip_header(lengths.to_svg());
-  top.insert(4, " x=\"0\" y=\"0\"");
-  bottom.insert(4, " x=\"0\" y=\"" + std::to_string(angles.height()) + "\"");
-  return out + top + bottom + "</svg>\n";
+  std::vector<io::SvgChart> charts;
+  if (n_angles > 0) charts.push_back(std::move(angles));
+  if (n_lengths > 0) charts.push_back(std::move(lengths));
+  if (ctx.analysis)
+    for (io::SvgChart& c : analysis_charts(ctx, x)) charts.push_back(std::move(c));
+  if (charts.empty()) charts.push_back(std::move(angles));  // a scene whose only variable is the input
+  return stack_charts(charts);
 }
 
 std::string draw_svg(const OutputContext& ctx) {

@@ -2,29 +2,39 @@
 // mechanism, each built in memory as text (the caller writes them atomically once everything succeeded).
 #pragma once
 
+#include "rollkin/analysis.hpp"
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace rollkin::cli {
+
+/// The contact analysis (docs/analysis.md) of every pose of a sweep, computed once for all the writers;
+/// empty where the pose was not solved.
+using SweepAnalysis = std::vector<std::optional<PoseAnalysis<double>>>;
+SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result);
 
 struct OutputContext {
   const io::Scene& scene;
   const io::Sweep& sweep;
   const SweepResult<double>& result;
   const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
+  const SweepAnalysis* analysis = nullptr;  // set with --analysis: its columns and charts are added
 };
 
 /// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
-/// <link>.x, <link>.y, <link>.angle, (analysis) per cam or rolling pair P the columns P.pressure_angle,
+/// <link>.x, <link>.y, <link>.angle, (ctx.analysis) per cam or rolling pair P the columns P.pressure_angle,
 /// P.sliding, P.slide_to_roll, P.kappa1, P.kappa2, P.relative_curvature and per moving link <link>.accel
 /// (docs/analysis.md), residual, status. Angles in degrees, lengths in scene units, rates per input unit.
-std::string csv_text(const OutputContext& ctx, bool rates, bool analysis = false);
+std::string csv_text(const OutputContext& ctx, bool rates);
 
-/// SVG chart(s) of the non-input pair variables against the input: angles in one chart, lengths and
-/// unitless parameters in a second one below it (when there are any).
+/// SVG charts against the input, stacked in one document: the non-input pair angles; the lengths and
+/// unitless parameters (when there are any); with ctx.analysis also the pressure angles, the sliding
+/// velocities, the slide-to-roll ratios, the contact curvatures and the links' angular accelerations.
 std::string plot_svg(const OutputContext& ctx);
 
 /// A centrode as a point file (the format a `samples` contour reads): the instant centre of link b
