@@ -504,6 +504,7 @@ struct CentrodesOptions {
   SweepRequest sweep;
   std::vector<std::string> links;  // A B
   std::string out;                 // prefix of PREFIX.A.txt and PREFIX.B.txt
+  std::string dxf;                 // both centrodes as SPLINE entities (optional)
 };
 
 int run_centrodes(const CentrodesOptions& o);
@@ -516,13 +517,16 @@ Command centrodes_command(CLI::App& rollkin) {
   add_output(*app, "--out", o->out, "prefix of the files PREFIX.A.txt (centrode in A's frame) and PREFIX.B.txt")
       ->required()
       ->type_name("PREFIX");
+  add_output(*app, "--dxf", o->dxf, "both centrodes as DXF SPLINE entities for CAD, on layers named after A and B");
   app->footer(
       "Sweeps the scene like 'solve' and writes, for every input value in sweep order, the instant centre of\n"
       "the motion of link B relative to link A (from the velocity solution) in A's frame (PREFIX.A.txt: the\n"
       "fixed centrode when A is the ground) and in B's frame (PREFIX.B.txt), in the point-file format a\n"
       "\"samples\" contour reads: rolled on each other as a rolling pair they reproduce the relative motion.\n"
       "A value where the centre is at infinity (pure relative translation) or that was not solved is a comment\n"
-      "line in both files and a line on stderr (exit status 1).\n" +
+      "line in both files and a line on stderr (exit status 1).\n"
+      "--dxf: each run of consecutive centres as the cubic spline through them (exact NURBS form of the\n"
+      "spline a \"samples\" contour fits to the points; closed when the sweep ends where it starts).\n" +
       std::string(kExitStatus));
   return {app, [o] { return run_centrodes(*o); }};
 }
@@ -540,7 +544,7 @@ int named_link(const Mechanism<double>& m, const std::string& name) {
 int run_centrodes(const CentrodesOptions& o) {
   if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
   const std::string file_a = o.out + "." + o.links[0] + ".txt", file_b = o.out + "." + o.links[1] + ".txt";
-  SweepRun run(o.sweep, {{"--out (link A)", file_a}, {"--out (link B)", file_b}});
+  SweepRun run(o.sweep, {{"--out (link A)", file_a}, {"--out (link B)", file_b}, {"--dxf", o.dxf}});
   const io::Scene& scene = run.scene;
   const Mechanism<double>& m = scene.mechanism;
   const int a = named_link(m, o.links[0]), b = named_link(m, o.links[1]);
@@ -558,6 +562,7 @@ int run_centrodes(const CentrodesOptions& o) {
   const cli::OutputContext ctx{scene, run.sweep, result, file_values};
   run.set_output("--out (link A)", [&] { return cli::centrode_text(ctx, centres, a, b, true); });
   run.set_output("--out (link B)", [&] { return cli::centrode_text(ctx, centres, a, b, false); });
+  run.set_output("--dxf", [&] { return cli::centrode_dxf(ctx, centres, a, b); });
   g_doing = "writing the output files";
   run.outputs.commit();
 

@@ -2,6 +2,7 @@
 
 #include "rollkin/analysis.hpp"
 #include "rollkin/io/csv.hpp"
+#include "rollkin/io/dxf_writer.hpp"
 #include "rollkin/io/svg.hpp"
 #include "rollkin/io/units.hpp"
 
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -303,6 +305,49 @@ std::string plot_svg(const OutputContext& ctx) {
     for (io::SvgChart& c : analysis_charts(ctx, x)) charts.push_back(std::move(c));
   if (charts.empty()) charts.push_back(std::move(angles));  // a scene whose only variable is the input
   return stack_charts(charts);
+}
+
+namespace {
+
+/// A DXF layer name from a link name: the characters DXF forbids in names (< > / \ " : ; ? * | = `) as '_'.
+std::string layer_name(const std::string& link) {
+  std::string name = link;
+  for (char& c : name)
+    if (std::strchr("<>/\\\":;?*|=`", c) != nullptr || static_cast<unsigned char>(c) < 0x20) c = '_';
+  return name;
+}
+
+/// The SPLINE of one run of centre points (see centrode_dxf).
+io::DxfSpline centrode_spline(const std::vector<Vec2<double>>& run, bool whole_sweep, const std::string& layer) {
+  if (run.size() < 4) return io::polyline_spline(run, layer);
+  double size = 0;
+  for (const Vec2<double>& x : run) size = std::max(size, (x - run.front()).norm());
+  SplineOptions<double> options;
+  options.closed = whole_sweep && (run.back() - run.front()).norm() <= 1e-9 * size;
+  if (!options.closed) return io::spline_of(SampledProfile<double>(run, options), layer);
+  // A full period: the last centre repeats the first (to round-off); the closed spline returns to it.
+  return io::spline_of(SampledProfile<double>(std::vector<Vec2<double>>(run.begin(), run.end() - 1), options), layer);
+}
+
+}  // namespace
+
+std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  std::vector<io::DxfSpline> splines;
+  for (const bool in_a : {true, false}) {
+    const std::string layer = layer_name(m.links[in_a ? a : b].name);
+    std::vector<Vec2<double>> run;
+    auto close_run = [&](bool whole_sweep) {
+      if (run.size() >= 2) splines.push_back(centrode_spline(run, whole_sweep, layer));
+      run.clear();
+    };
+    for (const InstantCentre<double>& c : centres) {
+      if (c.finite) run.push_back(in_a ? c.in_a : c.in_b);
+      else close_run(false);
+    }
+    close_run(run.size() == centres.size());
+  }
+  return io::dxf_text(splines, ctx.scene.length_unit);
 }
 
 std::string draw_svg(const OutputContext& ctx) {

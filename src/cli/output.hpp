@@ -43,6 +43,11 @@ std::string plot_svg(const OutputContext& ctx);
 std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b,
                           bool in_a);
 
+/// Both centrodes (in link a's frame on layer <a>, in link b's on layer <b>) as DXF SPLINE entities: each run
+/// of consecutive finite centres is the cubic spline through its points (io/dxf_writer.hpp; closed when the
+/// run is the whole sweep and ends where it starts), a run of two or three points the polyline through them.
+std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b);
+
 /// SVG drawing of the mechanism at up to five poses spread over the solved ones.
 std::string draw_svg(const OutputContext& ctx);
 

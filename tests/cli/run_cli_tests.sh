@@ -449,8 +449,8 @@ check "corner: rows before s = 3 ok, the next corner, the rest not_reached" \
   $(awk -F, 'NR > 1 { want = ($1 < 3) ? "ok" : (seen++ ? "not_reached" : "corner"); if ($NF != want) bad = 1 } END { exit bad || !seen }' table.csv; echo $?)
 
 # ---- centrodes (issue 13): the anti-parallelogram's crank centrodes are ellipses; rolled back, the linkage --
-run centrodes "$EX/antiparallelogram.json" --links crank follower --out anti --step 0.5
-check "centrodes: exit 0, both files written" $([ "$rc" -eq 0 ] && [ -f anti.crank.txt ] && [ -f anti.follower.txt ]; echo $?)
+run centrodes "$EX/antiparallelogram.json" --links crank follower --out anti --step 0.5 --dxf anti.dxf
+check "centrodes: exit 0, both files and the DXF written" $([ "$rc" -eq 0 ] && [ -f anti.crank.txt ] && [ -f anti.follower.txt ] && [ -f anti.dxf ]; echo $?)
 check "centrodes: 721 points per file, one per input value" \
   $([ "$(grep -Ec '^-?[0-9]' anti.crank.txt)" -eq 721 ] && [ "$(grep -Ec '^-?[0-9]' anti.follower.txt)" -eq 721 ]; echo $?)
 # Ellipses with foci at each crank's joints (crank: (0,0), (0,2); follower: (0,0), (2,0)) and major axis 4.
@@ -480,6 +480,38 @@ a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
 ok = len(a) == len(b) == 361 and all(r["status"] in ("ok", "singular") for r in a) and all(r["status"] == "ok" for r in b)
 worst = max(abs(float(x["O4.theta4"]) - float(y["O4.theta4"])) for x, y in zip(a, b))
 sys.exit(0 if ok and worst < 1e-6 else 1)
+PY
+)
+# The DXF read by ezdxf (an independent NURBS evaluator): one closed SPLINE per layer, through every centre
+# of the point files (1e-12), on the ellipses between them (the cubic's interpolation error, 1e-8 here).
+check "centrodes --dxf: ezdxf reads closed SPLINEs on layers crank and follower, through the points (1e-12), on the ellipses (1e-8)" \
+  $(/usr/bin/python3 - anti.dxf anti.crank.txt anti.follower.txt <<'PY' >/dev/null 2>&1; echo $?
+import math, sys, ezdxf
+doc = ezdxf.readfile(sys.argv[1])
+foci = {"crank": ((0, 0), (0, 2)), "follower": ((0, 0), (2, 0))}
+points = {layer: [tuple(map(float, l.split())) for l in open(f) if l[0] not in "#x"]
+          for layer, f in (("crank", sys.argv[2]), ("follower", sys.argv[3]))}
+splines = {e.dxf.layer: e for e in doc.modelspace().query("SPLINE")}
+assert sorted(splines) == ["crank", "follower"] and doc.header["$INSUNITS"] == 6
+for layer, e in splines.items():
+    assert e.closed
+    bs = e.construction_tool()
+    at_knots = [bs.point(k) for k in sorted(set(bs.knots()))]
+    assert len(at_knots) == len(points[layer]) == 721
+    assert max(math.dist((p.x, p.y), q) for p, q in zip(at_knots, points[layer])) < 1e-12
+    f1, f2 = foci[layer]
+    assert max(abs(math.dist((p.x, p.y), f1) + math.dist((p.x, p.y), f2) - 4) for p in bs.approximate(20000)) < 1e-8
+PY
+)
+sed -e 's/"type": "samples", "file": "anti.crank.txt", "closed": true/"type": "dxf", "file": "anti.dxf", "layer": "crank"/' \
+    -e 's/"type": "samples", "file": "anti.follower.txt", "closed": true/"type": "dxf", "file": "anti.dxf", "layer": "follower"/' rolled.json > rolled_dxf.json
+run solve rolled_dxf.json --csv rolled_dxf.csv
+check "centrodes --dxf rolled as dxf contours: output angle equals the four-bar's over a full turn (1e-6 deg)" \
+  $([ "$rc" -eq 0 ] && grep -q '"type": "dxf"' rolled_dxf.json && /usr/bin/python3 - fourbar.csv rolled_dxf.csv <<'PY' >/dev/null 2>&1; echo $?
+import csv, sys
+a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
+ok = len(a) == len(b) == 361 and all(r["status"] == "ok" for r in b)
+sys.exit(0 if ok and max(abs(float(x["O4.theta4"]) - float(y["O4.theta4"])) for x, y in zip(a, b)) < 1e-6 else 1)
 PY
 )
 run centrodes "$EX/antiparallelogram.json" --links crank crank --out same
