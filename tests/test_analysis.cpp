@@ -10,6 +10,10 @@
 //  - curvatures against closed forms: parabola 2a / (1 + 4 a^2 x^2)^(3/2), circles 1/r, a ring -1/R,
 //    ellipse AB / (A^2 sin^2 t + B^2 cos^2 t)^(3/2) (t the eccentric anomaly);
 //  - angular accelerations against central differences of the angular velocities along a sweep;
+//  - jerk: the follower's third derivative s''' against the closed forms of the eccentric cam's followers
+//    (roller: s = e sin theta + sqrt((R + r)^2 - e^2 cos^2 theta); flat face: s = R + e sin theta); the paper
+//    example's angular jerks and pair variables' third derivatives against central differences of the
+//    analytic accelerations;
 //  - the same analysis in MPFR (50 digits) against double.
 #define BOOST_TEST_MODULE analysis
 #include <boost/test/unit_test.hpp>
@@ -315,6 +319,65 @@ BOOST_AUTO_TEST_CASE(angular_accelerations_match_differences_of_angular_velociti
   BOOST_TEST(worst_q < 1e-6);
 }
 
+/// Third derivative of the roller follower's height s = e sin t + f, f = sqrt(w), w = (R + r)^2 - e^2 cos^2 t:
+/// from f^2 = w, 2 f f' = w', f'' = (w'' - 2 f'^2) / (2 f), f''' = (w''' - 6 f' f'') / (2 f).
+double roller_follower_jerk(double R, double e, double r, double t) {
+  const double w = (R + r) * (R + r) - e * e * std::cos(t) * std::cos(t);
+  const double w1 = e * e * std::sin(2 * t), w2 = 2 * e * e * std::cos(2 * t), w3 = -4 * e * e * std::sin(2 * t);
+  const double f = std::sqrt(w), f1 = w1 / (2 * f), f2 = (w2 - 2 * f1 * f1) / (2 * f);
+  return -e * std::cos(t) + (w3 - 6 * f1 * f2) / (2 * f);
+}
+
+BOOST_AUTO_TEST_CASE(follower_jerk_matches_the_closed_forms_of_the_eccentric_cam) {
+  const double R = 3, e = 1, r = 1;
+  for (const bool roller : {true, false}) {
+    const auto f = eccentric_cam<double>(R, e, roller, r);
+    const auto res = assemble_and_sweep(f, degrees<double>(-180, 180, 5));
+    BOOST_TEST_REQUIRE(res.all_solved());
+    const auto an = analyse_sweep(f.mech, res);
+    const int s = f.mech.find_variable("guide.s");
+    BOOST_TEST_REQUIRE(s >= 0);
+    double worst = 0;
+    for (std::size_t k = 0; k < res.poses.size(); ++k) {
+      const double t = res.poses[k].input;
+      const double expected = roller ? roller_follower_jerk(R, e, r, t) : -e * std::cos(t);
+      worst = std::max(worst, std::abs(an[k].qdddot(s) - expected));
+      // The follower translates: no angular jerk; the cam turns at a constant rate: none either.
+      BOOST_TEST(std::abs(an[k].angular_jerk[f.mech.find_link("follower")]) < 1e-9);
+      BOOST_TEST(std::abs(an[k].angular_jerk[f.mech.find_link("cam")]) < 1e-9);
+    }
+    BOOST_TEST_MESSAGE((roller ? "roller" : "flat-faced") << " follower: worst error of s''' against the closed form "
+                                                          << worst << " (e = " << e << ") over " << res.poses.size() << " poses");
+    BOOST_TEST(worst < 1e-9 * e);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(jerks_match_differences_of_the_analytic_accelerations) {
+  const auto f = paper_fourbar<double>();
+  const double h = 1e-4;
+  const std::vector<double> inputs = with_neighbours(-40, 90, 10, h);
+  const auto res = assemble_and_sweep(f, inputs);
+  BOOST_TEST_REQUIRE(res.all_solved());
+  const auto an = analyse_sweep(f.mech, res);
+  double worst = 0, worst_q = 0;
+  for (std::size_t k = 1; k < inputs.size(); k += 3) {
+    for (std::size_t l = 0; l < f.mech.links.size(); ++l) {
+      const double fd = (an[k + 1].angular_acceleration[l] - an[k - 1].angular_acceleration[l]) / (2 * h);
+      const double size = std::max({1.0, std::abs(an[k].angular_jerk[l]), std::abs(an[k].angular_acceleration[l])});
+      worst = std::max(worst, std::abs(an[k].angular_jerk[l] - fd) / size);
+    }
+    for (int i = 0; i < f.mech.variable_count(); ++i) {
+      const double fd = (an[k + 1].qddot(i) - an[k - 1].qddot(i)) / (2 * h);
+      const double size = std::max({1.0, std::abs(an[k].qdddot(i)), std::abs(an[k].qddot(i))});
+      worst_q = std::max(worst_q, std::abs(an[k].qdddot(i) - fd) / size);
+    }
+  }
+  BOOST_TEST_MESSAGE("paper example: angular jerks vs central differences of the accelerations, worst relative error "
+                     << worst << "; pair variables' third derivatives " << worst_q);
+  BOOST_TEST(worst < 1e-6);
+  BOOST_TEST(worst_q < 1e-6);
+}
+
 BOOST_AUTO_TEST_CASE(mpfr_analysis_agrees_with_double) {
   using M = mpfr50;
   const auto fd = paper_fourbar<double>();
@@ -348,6 +411,16 @@ BOOST_AUTO_TEST_CASE(mpfr_analysis_agrees_with_double) {
     compare(ad.angular_acceleration[l], am.angular_acceleration[l], std::max(1.0, std::abs(ad.angular_acceleration[l])));
   BOOST_TEST_MESSAGE("paper example at 37 deg: double vs MPFR50 analysis, worst relative difference " << worst);
   BOOST_TEST(worst < 1e-12);
+  // The jerk's differences in MPFR take h = eps^(1/5) ~ 1e-10 (truncation ~ 1e-40): the double jerk's own
+  // error (truncation and round-off) is measured against it.
+  double worst_jerk = 0;
+  for (std::size_t l = 0; l < ad.angular_jerk.size(); ++l)
+    worst_jerk = std::max(worst_jerk, std::abs(ad.angular_jerk[l] - to_double(am.angular_jerk[l])) /
+                                          std::max(1.0, std::abs(ad.angular_jerk[l])));
+  for (int i = 0; i < fd.mech.variable_count(); ++i)
+    worst_jerk = std::max(worst_jerk, std::abs(ad.qdddot(i) - to_double(am.qdddot(i))) / std::max(1.0, std::abs(ad.qdddot(i))));
+  BOOST_TEST_MESSAGE("paper example at 37 deg: double vs MPFR50 jerks, worst relative difference " << worst_jerk);
+  BOOST_TEST(worst_jerk < 1e-9);
   // MPFR is not merely double in disguise: its sliding at the rolling pairs is zero to its own precision.
   for (const auto& cm : am.contacts) BOOST_TEST(abs(cm.sliding) < M("1e-40"));
 }

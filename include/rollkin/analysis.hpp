@@ -27,7 +27,17 @@
 //   relative_curvature = kappa1 + kappa2: the rate relation of docs/method.md section 5, relative angular
 //      velocity = (contact speed along the contours) x (kappa1 + kappa2); zero where the contours osculate.
 // Velocities, sliding and rolling speed are per unit of the input (per radian for an angle input).
-// Jerk (third derivatives) is not computed.
+//
+// Jerk: the acceleration residual G(q, q', q'') = J_s q'' + gamma(q, q') (acceleration_residual,
+// kinematics.hpp: the exact spatial acceleration of every loop's closing transform and the rolling rows'
+// second derivatives, at any q) vanishes along the motion, so its derivative along the motion does too:
+//   J_u q'''_u = -D G,   D G = dG/dq q' + dG/dq' q''   (the input's q''' is zero),
+// and a link's angular jerk is D alpha + omega(q''') (alpha(q, q', q'') of link_motion, omega(x) the
+// angular velocity of the rates x). The contour jets stop at the third derivative, so D is taken as the
+// fourth-order central difference of G and alpha along the motion, (q, q') -> (q + e q', q' + e q''),
+// e = +-h, +-2h, with h such that the largest variable moves by eps^(1/5) of its scale: truncation ~ h^4,
+// round-off ~ eps / h, about 1e-12 relative in double where the contours are C4 (on a sampled spline the jerk jumps at the
+// knots, where p''' does, and the difference there averages the two sides).
 #pragma once
 
 #include "rollkin/solve/position.hpp"
@@ -55,13 +65,16 @@ template <class S> struct PoseAnalysis {
   std::vector<SE2<S>> link_pose;             // world pose per link
   std::vector<Twist<S>> link_velocity;       // world (spatial) twist per link per unit input: (v, omega)
   std::vector<S> angular_acceleration;       // per link, d^2(angle)/d(input)^2
+  std::vector<S> angular_jerk;               // per link, d^3(angle)/d(input)^3
   VectorX<S> qddot;                          // every pair variable's second derivative
+  VectorX<S> qdddot;                         // ... and third derivative
 };
 
 /// Workspace of analyse_pose: buffers sized once per mechanism.
 template <class S> struct AnalysisData {
   SolveData<S> solve;
-  explicit AnalysisData(const Mechanism<S>& m) : solve(m) {}
+  KinematicsData<S> moved;  // pairs at the shifted poses of the jerk's differences
+  explicit AnalysisData(const Mechanism<S>& m) : solve(m), moved(m) {}
 };
 
 namespace detail {
@@ -111,6 +124,46 @@ template <class S> void link_motion(const Mechanism<S>& m, const KinematicsData<
   }
 }
 
+/// Step of the jerk's differences (top of this file): the largest variable moves by eps^(1/5) of its scale
+/// (7e-4 in double), which balances the difference's truncation (h^4) against round-off (eps / h).
+template <class S> S jerk_step(const Mechanism<S>& m, const VectorX<S>& qdot) {
+  using std::abs;
+  using std::max;
+  using std::pow;
+  S fastest(0);
+  for (int i = 0; i < m.variable_count(); ++i) fastest = max(fastest, S(abs(qdot(i)) / m.variable_scale(i)));
+  const S step = pow(epsilon<S>(), S(1) / S(5));
+  return fastest > S(0) ? S(step / fastest) : step;
+}
+
+/// The acceleration residual G and the links' angular accelerations, one vector, at (q, qdot, qddot).
+template <class S> VectorX<S> accelerations_at(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>& qdot,
+                                               const VectorX<S>& qddot, KinematicsData<S>& d) {
+  evaluate_pairs(m, q, &qdot, 3, d);
+  VectorX<S> g;
+  acceleration_residual(m, qdot, qddot, d, g);
+  PoseAnalysis<S> motion;
+  motion.link_pose = link_poses(m, d);
+  link_motion(m, d, qdot, qddot, motion);
+  VectorX<S> out(g.size() + static_cast<Eigen::Index>(m.links.size()));
+  out.head(g.size()) = g;
+  for (std::size_t l = 0; l < m.links.size(); ++l) out(g.size() + static_cast<Eigen::Index>(l)) = motion.angular_acceleration[l];
+  return out;
+}
+
+/// D (G, alpha): their derivative along the motion (top of this file), fourth-order central difference
+///   D f = (8 (f(h) - f(-h)) - (f(2h) - f(-2h))) / (12 h),  f(e) = f(q + e q', q' + e q'', q'').
+template <class S> VectorX<S> along_motion(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>& qdot,
+                                           const VectorX<S>& qddot, KinematicsData<S>& d) {
+  const S h = jerk_step(m, qdot);
+  auto f = [&](const S& e) -> VectorX<S> {
+    const VectorX<S> qe = q + e * qdot, qde = qdot + e * qddot;
+    return accelerations_at<S>(m, qe, qde, qddot, d);
+  };
+  const VectorX<S> near = f(h) - f(S(-h)), far = f(S(2) * h) - f(S(-2) * h);
+  return (S(8) * near - far) / (S(12) * h);
+}
+
 /// The contact quantities of one cam or rolling pair (see the top of this file).
 template <class S> ContactAnalysis<S> contact_analysis(const Mechanism<S>& m, int k, const PairState<S>& st,
                                                        const VectorX<S>& qdot, const PoseAnalysis<S>& motion) {
@@ -144,6 +197,23 @@ template <class S> ContactAnalysis<S> contact_analysis(const Mechanism<S>& m, in
 
 }  // namespace detail
 
+/// Third derivatives (top of this file): J_u q'''_u = -D G with the factorisation of J at q in data.solve, and
+/// the angular jerks D alpha + omega(q''').
+template <class S> void jerk(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>& qdot, AnalysisData<S>& data,
+                             PoseAnalysis<S>& out) {
+  SolveData<S>& sd = data.solve;
+  const VectorX<S> d = detail::along_motion(m, q, qdot, out.qddot, data.moved);
+  const Eigen::Index rows = m.equation_count();
+  sd.rhs = -d.head(rows).cwiseProduct(sd.row_weight);
+  sd.solve(sd.rhs, sd.step);
+  out.qdddot = VectorX<S>::Zero(m.variable_count());
+  for (std::size_t c = 0; c < m.unknowns.size(); ++c) out.qdddot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
+  const std::vector<Twist<S>> omega = link_twists(m, sd.kin, out.link_pose, out.qdddot);
+  out.angular_jerk.resize(m.links.size());
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    out.angular_jerk[l] = d(rows + static_cast<Eigen::Index>(l)) + omega[l].z();
+}
+
 /// Contact analysis at the solved pose q with rates qdot (per unit rate of the swept input; the other inputs
 /// held). Needs C2 contours at the contacts (curvature and its rate). A singular pose gives the minimum-norm
 /// accelerations of the rank-deficient system: no more meaningful there than the rates themselves.
@@ -159,6 +229,7 @@ template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const Vec
   out.qddot = solve_acceleration(m, q, sd, qdot, input_accels);
   out.link_pose = link_poses(m, sd.kin);
   detail::link_motion(m, sd.kin, qdot, out.qddot, out);
+  jerk(m, q, qdot, data, out);
   for (std::size_t k = 0; k < m.pairs.size(); ++k)
     if (is_contact(m.pairs[k].kind))
       out.contacts.push_back(detail::contact_analysis(m, static_cast<int>(k), sd.kin.pairs[k], qdot, out));

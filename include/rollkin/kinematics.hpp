@@ -124,8 +124,14 @@ template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX
   }
 }
 
-/// gamma = Jdot qdot at a closed pose (pairs evaluated with order 3 and this qdot).
-template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qdot, KinematicsData<S>& d) {
+namespace detail {
+
+/// Spatial acceleration of each loop's closing transform, Vdot = sum_k Ad_{L_k} lambda_k qddot_k + gamma with
+/// gamma = sum_k (Ad_{L_k} lambdadot_k + ad_{V_k} Ad_{L_k} lambda_k) qdot_k, and each rolling row's second
+/// derivative sigma_A uddot + sigma_B vddot + sigma_A' udot^2 + sigma_B' vdot^2 (pairs evaluated with order 3
+/// and this qdot). Exact at any q, closed or not. Without qddot: gamma alone (the bias).
+template <class S> void loop_accelerations(const Mechanism<S>& m, const VectorX<S>& qdot, const VectorX<S>* qddot,
+                                           KinematicsData<S>& d, VectorX<S>& out) {
   int row = 0;
   for (const auto& loop : m.loops) {
     SE2<S> left;
@@ -149,21 +155,39 @@ template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qd
         const S& qd = qdot(p.first_variable + j);
         const Twist<S> c = left.adjoint(tw[j]);
         gamma += (left.adjoint(tw_rate[j]) + lie_bracket<S>(velocity, c)) * qd;
+        if (qddot) gamma += c * (*qddot)(p.first_variable + j);
         step_velocity += c * qd;
       }
       velocity += step_velocity;
       left = left * step;
     }
-    d.bias.template segment<3>(row) = gamma;
+    out.template segment<3>(row) = gamma;
     row += 3;
   }
   for (int k : m.rolling_pairs) {
     const Pair<S>& p = m.pairs[k];
     const int i = p.first_variable;
     const PairState<S>& st = d.pairs[k];
-    d.bias(row) = st.contact[0].speed_rate * qdot(i) * qdot(i) + st.contact[1].speed_rate * qdot(i + 1) * qdot(i + 1);
+    out(row) = st.contact[0].speed_rate * qdot(i) * qdot(i) + st.contact[1].speed_rate * qdot(i + 1) * qdot(i + 1);
+    if (qddot) out(row) += st.contact[0].speed * (*qddot)(i) + st.contact[1].speed * (*qddot)(i + 1);
     ++row;
   }
+}
+
+}  // namespace detail
+
+/// gamma = Jdot qdot at a closed pose (pairs evaluated with order 3 and this qdot).
+template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qdot, KinematicsData<S>& d) {
+  detail::loop_accelerations<S>(m, qdot, nullptr, d, d.bias);
+}
+
+/// The acceleration residual G(q, qdot, qddot) = Vdot (detail::loop_accelerations), pairs evaluated at q with
+/// order 3 and qdot. Zero along every motion of the mechanism, wherever it is: the jerk equation is its
+/// derivative along the motion (analysis.hpp).
+template <class S> void acceleration_residual(const Mechanism<S>& m, const VectorX<S>& qdot, const VectorX<S>& qddot,
+                                              KinematicsData<S>& d, VectorX<S>& out) {
+  out.resize(m.equation_count());
+  detail::loop_accelerations(m, qdot, &qddot, d, out);
 }
 
 /// World pose of every link, from the spanning tree (pairs evaluated at q).

@@ -55,21 +55,25 @@ const char* const kContactColumns[] = {"pressure_angle", "sliding", "slide_to_ro
 const std::size_t kContactColumnCount = sizeof(kContactColumns) / sizeof(kContactColumns[0]);
 
 std::size_t analysis_column_count(const Mechanism<double>& m) {
-  return contact_pairs(m).size() * kContactColumnCount + (m.links.size() - 1);
+  return contact_pairs(m).size() * kContactColumnCount + 2 * (m.links.size() - 1) + 2 * m.unknowns.size();
 }
 
 /// --analysis columns (docs/analysis.md): per contact pair P the P.<quantity> columns, per moving link
-/// <link>.accel.
-void analysis_columns(const Mechanism<double>& m, std::vector<std::string>& cols) {
+/// <link>.accel and <link>.jerk, per unknown v d2(v)/d(input)2 and d3(v)/d(input)3.
+void analysis_columns(const Mechanism<double>& m, int input, std::vector<std::string>& cols) {
   for (int k : contact_pairs(m))
     for (const char* q : kContactColumns) cols.push_back(m.pairs[k].name + "." + q);
-  for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (static_cast<int>(l) != m.ground) cols.push_back(m.links[l].name + ".accel");
+  for (const char* q : {".accel", ".jerk"})
+    for (std::size_t l = 0; l < m.links.size(); ++l)
+      if (static_cast<int>(l) != m.ground) cols.push_back(m.links[l].name + q);
+  for (const char* order : {"2", "3"})
+    for (int i : m.unknowns)
+      cols.push_back(std::string("d") + order + "(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")" + order);
 }
 
 /// The analysis of one pose in output units: pressure angle in degrees, sliding per unit of the input's
 /// output unit (per degree for an angle input, like the rate columns), curvatures in 1/scene unit, angular
-/// accelerations in degrees per input unit squared.
+/// accelerations in degrees per input unit squared, jerks per input unit cubed.
 void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, std::vector<double>& row) {
   const double degrees = io::from_radians(1.0, kOutputAngle);
   for (const ContactAnalysis<double>& c : a.contacts) {
@@ -82,6 +86,10 @@ void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, 
   }
   for (std::size_t l = 0; l < m.links.size(); ++l)
     if (static_cast<int>(l) != m.ground) row.push_back(a.angular_acceleration[l] * degrees / (in_scale * in_scale));
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_jerk[l] * degrees / (in_scale * in_scale * in_scale));
+  for (int i : m.unknowns) row.push_back(a.qddot(i) * out_scale(m, i) / (in_scale * in_scale));
+  for (int i : m.unknowns) row.push_back(a.qdddot(i) * out_scale(m, i) / (in_scale * in_scale * in_scale));
 }
 
 /// Charts stacked top to bottom in one SVG document (nested <svg> elements); a single chart as it is.
@@ -174,6 +182,12 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
                      [=](const PoseAnalysis<double>& a, std::size_t k) {
                        return a.angular_acceleration[moving[k]] * degrees / (in_scale * in_scale);
                      }});
+  if (!links.empty())
+    specs.push_back({"angular jerk of the links",
+                     std::string("angular jerk [") + io::unit_label(kOutputAngle) + " / " + per_input + "^3]", links,
+                     [=](const PoseAnalysis<double>& a, std::size_t k) {
+                       return a.angular_jerk[moving[k]] * degrees / (in_scale * in_scale * in_scale);
+                     }});
   std::vector<io::SvgChart> charts;
   for (const ChartSpec& s : specs) charts.push_back(analysis_chart(ctx, x, s));
   return charts;
@@ -208,7 +222,7 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
     cols.push_back(l.name + ".angle");
   }
   const bool analysis = ctx.analysis != nullptr;
-  if (analysis) analysis_columns(m, cols);
+  if (analysis) analysis_columns(m, input, cols);
   cols.push_back("residual");
   io::CsvWriter csv(cols, "status");
   KinematicsData<double> kin(m);

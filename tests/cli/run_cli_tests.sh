@@ -100,8 +100,8 @@ check "--rates adds d(var)/d(input) columns" \
 # ---- --analysis: contact analysis columns (docs/analysis.md) -----------------------------------------
 run solve "$EX/paper_fourbar.json" --csv analysis.csv --analysis
 check "--analysis exits 0" $([ "$rc" -eq 0 ] && [ -f analysis.csv ]; echo $?)
-check "--analysis header: link poses, per contact pair the six quantities, per moving link .accel, residual" \
-  $([ "$(head -n 1 analysis.csv)" = "O_A.theta2,A.x,A.theta23,B.theta34,B.theta4,O_B.theta5,link1.x,link1.y,link1.angle,link2.x,link2.y,link2.angle,link3.x,link3.y,link3.angle,link4.x,link4.y,link4.angle,A.pressure_angle,A.sliding,A.slide_to_roll,A.kappa1,A.kappa2,A.relative_curvature,B.pressure_angle,B.sliding,B.slide_to_roll,B.kappa1,B.kappa2,B.relative_curvature,link2.accel,link3.accel,link4.accel,residual,status" ]; echo $?)
+check "--analysis header: link poses, per contact pair the six quantities, per moving link .accel and .jerk, per unknown d2 and d3, residual" \
+  $([ "$(head -n 1 analysis.csv)" = "O_A.theta2,A.x,A.theta23,B.theta34,B.theta4,O_B.theta5,link1.x,link1.y,link1.angle,link2.x,link2.y,link2.angle,link3.x,link3.y,link3.angle,link4.x,link4.y,link4.angle,A.pressure_angle,A.sliding,A.slide_to_roll,A.kappa1,A.kappa2,A.relative_curvature,B.pressure_angle,B.sliding,B.slide_to_roll,B.kappa1,B.kappa2,B.relative_curvature,link2.accel,link3.accel,link4.accel,link2.jerk,link3.jerk,link4.jerk,d2(A.x)/d(O_A.theta2)2,d2(A.theta23)/d(O_A.theta2)2,d2(B.theta34)/d(O_A.theta2)2,d2(B.theta4)/d(O_A.theta2)2,d2(O_B.theta5)/d(O_A.theta2)2,d3(A.x)/d(O_A.theta2)3,d3(A.theta23)/d(O_A.theta2)3,d3(B.theta34)/d(O_A.theta2)3,d3(B.theta4)/d(O_A.theta2)3,d3(O_B.theta5)/d(O_A.theta2)3,residual,status" ]; echo $?)
 check "--analysis: sliding at both rolling pairs below 1e-9 on every ok row" \
   $(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == "A.sliding") a = i; if ($i == "B.sliding") b = i }; next }
              $NF == "ok" { n++; if (a == 0 || b == 0 || !(($a < 0 ? -$a : $a) < 1e-9) || !(($b < 0 ? -$b : $b) < 1e-9)) bad = 1 }
@@ -113,6 +113,23 @@ check "--analysis: parabola curvature 2a/(1+4a^2x^2)^1.5 (a = 0.5), disks 1 and 
                                          if ((d < 0 ? -d : d) > 1e-14) bad = 1 }
                for (p = 0; p < 2; ++p) { v = $c[(p ? "B" : "A") ".pressure_angle"]; if (!(v >= 0 && v <= 90)) bad = 1 } }
              END { exit bad || NR != 152 }' analysis.csv; echo $?)
+run solve "$EX/paper_fourbar.json" --from 20 --to 21 --step 0.01 --csv fine_analysis.csv --analysis --rates
+check "--analysis: per-degree units, d2 = difference of the rate columns, d3 and .jerk = differences of d2 and .accel (1e-6)" \
+  $([ "$rc" -eq 0 ] && /usr/bin/python3 - fine_analysis.csv <<'PY' >/dev/null 2>&1; echo $?
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+h = 0.01
+pairs = [("d(B.theta4)/d(O_A.theta2)", "d2(B.theta4)/d(O_A.theta2)2"), ("d(A.x)/d(O_A.theta2)", "d2(A.x)/d(O_A.theta2)2"),
+         ("d2(B.theta4)/d(O_A.theta2)2", "d3(B.theta4)/d(O_A.theta2)3"), ("d2(A.x)/d(O_A.theta2)2", "d3(A.x)/d(O_A.theta2)3"),
+         ("link4.accel", "link4.jerk"), ("link3.accel", "link3.jerk")]
+worst = 0
+for k in range(1, len(rows) - 1):
+    for low, high in pairs:
+        fd = (float(rows[k + 1][low]) - float(rows[k - 1][low])) / (2 * h)
+        worst = max(worst, abs(fd - float(rows[k][high])) / max(1e-3, abs(float(rows[k][high]))))
+sys.exit(0 if len(rows) == 101 and worst < 1e-6 else 1)
+PY
+)
 run reference "$EX/paper_fourbar.json" --csv ref_analysis.csv --analysis
 check "reference --analysis is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -e ref_analysis.csv ]; echo $?)
 run solve "$EX/paper_fourbar.json" --from -70 --to 120 --csv wide_analysis.csv --analysis
