@@ -13,6 +13,7 @@
 #include "rollkin/io/dxf.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -321,4 +322,24 @@ BOOST_AUTO_TEST_CASE(selection_errors) {
   BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"L", "2A"}); }), "exactly one of the two"));
   BOOST_TEST(contains(input_error_of([&] { rollkin::read_dxf_contour(kDir + "missing.dxf", DxfSelection{"L", ""}); }),
                       "cannot open the DXF file"));
+}
+
+// fuzz_dxf (session 6): an input error found while libdxflib read the text was thrown through DL_Dxf::in,
+// which then never closed its FILE; after some 10^5 rejected inputs the reader could not even make its
+// temporary copy. Rejected inputs must leave no descriptor open.
+BOOST_AUTO_TEST_CASE(rejected_inputs_leave_no_file_open) {
+  auto open_descriptors = [] {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator("/proc/self/fd")) ++n;
+    return n;
+  };
+  const std::string bad_value = "0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\nabc\n0\nENDSEC\n0\nEOF\n";
+  const std::string bad_count = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n10\n1\n20\n2\n0\nENDSEC\n0\nEOF\n";
+  const std::size_t before = open_descriptors();
+  for (int k = 0; k < 50; ++k)
+    for (const std::string& text : {bad_value, bad_count}) {
+      const std::string message = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{}, "bad.dxf"); });
+      BOOST_TEST(contains(message, "bad.dxf"));
+    }
+  BOOST_TEST(open_descriptors() == before);
 }

@@ -696,11 +696,38 @@ class TempFile {
   std::string path_;
 };
 
+/// Runs the collector's checks over the group pairs of `text` as libdxflib will deliver them (a code line and
+/// a value line per group, up to group 0 "EOF"), before libdxflib reads it. The checks must not fire while
+/// libdxflib reads: an exception thrown through DL_Dxf::in leaves its FILE open (fuzz_dxf ran out of file
+/// descriptors after some 10^5 rejected inputs), so every input error is found here first.
+void check_groups_before_reading(const std::string& text, Collector& dry) {
+  std::size_t pos = 0;
+  auto next_line = [&](std::string& line) {
+    if (pos >= text.size()) return false;
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    line = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    return true;
+  };
+  std::string code_line, value;
+  while (next_line(code_line) && next_line(value)) {
+    long code = 0;
+    if (!parse_long(code_line, code)) return;  // only a trailing blank line (check_group_structure)
+    dry.processCodeValuePair(static_cast<unsigned>(code), value);
+    if (code == 0 && trim(value) == "EOF") return;
+  }
+}
+
 /// `text` is the content of the file at `disk_path`, which libdxflib reads (its FILE* reader is the one that
 /// calls processCodeValuePair; its istream reader, in libdxflib 3.26, does not).
 DxfContour contour_from(const std::string& text, const std::string& disk_path, const DxfSelection& selection,
                         const std::string& file) {
   const std::size_t pairs = check_group_structure(text, file);
+  {
+    Collector dry(file, pairs);
+    check_groups_before_reading(text, dry);
+  }
   Collector collector(file, pairs);
   {
     DL_Dxf reader;
