@@ -1,0 +1,392 @@
+#include "animation.hpp"
+
+#include "rollkin/centrodes.hpp"
+#include "rollkin/io/csv.hpp"
+#include "rollkin/io/svg.hpp"
+#include "rollkin/io/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+namespace rollkin::cli {
+namespace {
+
+const int kWidth = 900, kHeight = 640;  // px of the drawing
+const double kMargin = 30;              // px around the mechanism's extent
+
+/// A number with 7 significant digits (the compact table of the page), "null" when not finite (JSON).
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.7g", v);
+  return buf;
+}
+
+/// A JavaScript string literal of text with every character but letters, digits and " _.,:;()-" written as
+/// \u00XX: nothing in it can end the string, the script or the CDATA section.
+std::string js_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u) || std::string(" _.,:;()-").find(c) != std::string::npos) {
+      out += c;
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(u));
+      out += buf;
+    }
+  }
+  return out + "\"";
+}
+
+/// SVG path data through the points ("M x y L x y ...", "Z" when closed); a non-finite point breaks it.
+std::string path_data(const std::vector<Eigen::Vector2d>& pts, bool closed) {
+  std::string d;
+  bool drawing = false, broken = false;
+  for (const Eigen::Vector2d& p : pts) {
+    if (!p.allFinite()) {
+      drawing = false;
+      broken = true;
+      continue;
+    }
+    d += (d.empty() ? "" : " ") + std::string(drawing ? "" : "M") + num(p.x()) + " " + num(p.y());
+    if (!drawing) d += " L";
+    drawing = true;
+  }
+  if (!d.empty() && d.compare(d.size() - 2, 2, " L") == 0) d.resize(d.size() - 2);
+  if (closed && !broken && !d.empty()) d += " Z";
+  return d;
+}
+
+/// A link pose as the CSV's <link>.x, <link>.y, <link>.angle columns give it (angle in degrees).
+Eigen::Vector3d pose_columns(const SE2<double>& p) {
+  return {p.translation().x(), p.translation().y(), io::from_radians(p.angle(), io::AngleUnit::Degree)};
+}
+
+/// "translate(x y) rotate(angle)" of a link pose: a point p of the link's frame at R p + t, angle in degrees.
+std::string transform_of(const SE2<double>& pose) {
+  const Eigen::Vector3d c = pose_columns(pose);
+  return "translate(" + num(c.x()) + " " + num(c.y()) + ") rotate(" + num(c.z()) + ")";
+}
+
+/// Everything that moves, at every pose with values (has_pose()): link poses and contact points.
+struct Frames {
+  std::vector<bool> has;                             // per pose
+  std::vector<std::vector<SE2<double>>> links;       // per pose, per link: world pose
+  std::vector<std::vector<Eigen::Vector2d>> contacts;  // per pose, per contact pair: world point
+};
+
+Frames frames_of(const OutputContext& ctx) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  KinematicsData<double> kin(m);
+  Frames f;
+  for (const SweepPose<double>& pose : ctx.result.poses) {
+    f.has.push_back(pose.report.has_pose());
+    f.links.emplace_back();
+    f.contacts.emplace_back();
+    if (!f.has.back()) continue;
+    evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);  // as csv_text: the same link poses
+    f.links.back() = link_poses(m, kin);
+    f.contacts.back() = contact_points(m, kin, f.links.back());
+  }
+  return f;
+}
+
+/// World box (xmin, ymin, xmax, ymax) of the links' drawings and the contact points over all poses with values.
+Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Eigen::Vector4d box(inf, inf, -inf, -inf);
+  auto add = [&](const Eigen::Vector2d& p) {
+    if (!p.allFinite()) return;
+    box << std::min(box(0), p.x()), std::min(box(1), p.y()), std::max(box(2), p.x()), std::max(box(3), p.y());
+  };
+  for (std::size_t k = 0; k < f.has.size(); ++k) {
+    if (!f.has[k]) continue;
+    for (std::size_t l = 0; l < sketches.size(); ++l) {
+      const SE2<double>& at = f.links[k][l];
+      for (const auto& c : sketches[l].contours)
+        for (const auto& p : c) add(at.act(p));
+      for (const auto& p : sketches[l].body) add(at.act(p));
+      for (const auto& p : sketches[l].pivots) add(at.act(p));
+    }
+    for (const auto& p : f.contacts[k]) add(p);
+  }
+  if (!(box(0) <= box(2))) box << -1, -1, 1, 1;  // nothing solved
+  return box;
+}
+
+/// The centrodes of every moving link relative to the ground (centrodes.hpp): per link its moving centrode
+/// (in its own frame) and, per link, the fixed centrode (in the ground's frame).
+struct LinkCentrodes {
+  std::vector<std::vector<Eigen::Vector2d>> fixed, moving;  // per link (empty for the ground)
+};
+
+LinkCentrodes centrodes_of(const OutputContext& ctx) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  KinematicsData<double> kin(m);
+  LinkCentrodes out;
+  out.fixed.resize(m.links.size());
+  out.moving.resize(m.links.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector2d none(nan, nan);
+  for (std::size_t l = 0; l < m.links.size(); ++l) {
+    if (static_cast<int>(l) == m.ground) continue;
+    for (const InstantCentre<double>& c : centrodes(m, kin, ctx.result, m.ground, static_cast<int>(l))) {
+      out.fixed[l].push_back(c.finite ? Eigen::Vector2d(c.in_a) : none);
+      out.moving[l].push_back(c.finite ? Eigen::Vector2d(c.in_b) : none);
+    }
+  }
+  return out;
+}
+
+/// A JSON array of the numbers, 7 significant digits.
+std::string json_numbers(const std::vector<double>& v) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + num(v[i]);
+  return out + "]";
+}
+
+/// The data of the script: the input column (full precision, as in the CSV), per pose a status index and
+/// the flat tables of link poses and contact points (null for a pose without values).
+std::string page_data(const OutputContext& ctx, const Frames& f, std::size_t start) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  std::vector<std::string> texts, kinds;
+  std::map<SolveStatus, std::size_t> index;
+  std::string inputs, status, poses, contacts;
+  for (std::size_t k = 0; k < f.has.size(); ++k) {
+    const SolveStatus s = ctx.result.poses[k].report.status;
+    if (!index.count(s)) {
+      index[s] = texts.size();
+      const std::string name = to_string(s);
+      if (s == SolveStatus::Converged) {
+        texts.push_back(name);
+        kinds.push_back("ok");
+      } else if (s == SolveStatus::Singular) {
+        texts.push_back(name + ": the values follow the branch (interpolated between the regular poses on both sides)");
+        kinds.push_back("warn");
+      } else {
+        texts.push_back(name + ": not solved, the moving links are hidden");
+        kinds.push_back("bad");
+      }
+    }
+    const std::string sep = k ? "," : "";
+    inputs += sep + io::format_double(input_column(ctx, k));
+    status += sep + std::to_string(index[s]);
+    std::vector<double> row, points;
+    for (const auto& p : f.links[k]) {
+      const Eigen::Vector3d c = pose_columns(p);
+      row.insert(row.end(), {c.x(), c.y(), c.z()});
+    }
+    for (const auto& p : f.contacts[k]) points.insert(points.end(), {p.x(), p.y()});
+    poses += sep + (f.has[k] ? json_numbers(row) : "null");
+    contacts += sep + (f.has[k] ? json_numbers(points) : "null");
+  }
+  auto strings = [](const std::vector<std::string>& v) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + js_string(v[i]);
+    return out + "]";
+  };
+  return "{\"links\":" + std::to_string(m.links.size()) + ",\"contacts\":" + std::to_string(contact_pairs(m).size()) +
+         ",\"ground\":" + std::to_string(m.ground) + ",\"start\":" + std::to_string(start) + ",\n\"status_texts\":" +
+         strings(texts) + ",\"status_kinds\":" + strings(kinds) + ",\n\"inputs\":[" + inputs + "],\n\"status\":[" +
+         status + "],\n\"poses\":[" + poses + "],\n\"contact_points\":[" + contacts + "]}";
+}
+
+// The page's style and script (fixed text). A frame sets one `transform` per link and per contact point from
+// tables of strings built once from the data; nothing else of the document changes.
+const char* const kStyle = R"CSS(
+body { font: 14px sans-serif; margin: 12px; color: #222; }
+h1 { font-size: 16px; margin: 0 0 8px 0; }
+#controls { display: flex; flex-wrap: wrap; gap: 14px; align-items: center; margin-bottom: 6px; }
+#pose { width: 340px; }
+#play { width: 64px; }
+#status.ok { color: #2a7d2a; }
+#status.warn { color: #b8860b; font-weight: bold; }
+#status.bad { color: #d62728; font-weight: bold; }
+svg path { fill: none; vector-effect: non-scaling-stroke; stroke-linejoin: round; }
+svg .joint { vector-effect: non-scaling-stroke; }
+svg.no-traces .trace, svg.no-centrodes .centrode { display: none; }
+)CSS";
+
+const char* const kScript = R"JS(
+(function () {
+  "use strict";
+  var d = rollkinData, n = d.inputs.length;
+  var svg = document.getElementById("mechanism");
+  var slider = document.getElementById("pose"), button = document.getElementById("play");
+  var valueOut = document.getElementById("input-value"), indexOut = document.getElementById("pose-index");
+  var statusOut = document.getElementById("status");
+  var links = [], contacts = [], l, c, k;
+  for (l = 0; l < d.links; ++l) links.push(document.getElementById("link-" + l));
+  for (c = 0; c < d.contacts; ++c) contacts.push(document.getElementById("contact-" + c));
+  // Per pose, the transform of every link and contact point (null: the pose has no values).
+  var linkT = [], contactT = [];
+  for (k = 0; k < n; ++k) {
+    var p = d.poses[k], q = d.contact_points[k], t = null, u = null;
+    if (p !== null) {
+      t = [];
+      for (l = 0; l < d.links; ++l) t.push("translate(" + p[3 * l] + " " + p[3 * l + 1] + ") rotate(" + p[3 * l + 2] + ")");
+      u = [];
+      for (c = 0; c < d.contacts; ++c) u.push("translate(" + q[2 * c] + " " + q[2 * c + 1] + ")");
+    }
+    linkT.push(t);
+    contactT.push(u);
+  }
+  var shown = -1, hidden = false;
+  function setHidden(h) {
+    if (h === hidden) return;
+    hidden = h;
+    for (l = 0; l < links.length; ++l) if (l !== d.ground) links[l].setAttribute("visibility", h ? "hidden" : "visible");
+    for (c = 0; c < contacts.length; ++c) contacts[c].setAttribute("visibility", h ? "hidden" : "visible");
+  }
+  function show(i) {
+    if (i === shown) return;
+    shown = i;
+    var t = linkT[i], u = contactT[i];
+    if (t !== null) {
+      for (l = 0; l < links.length; ++l) links[l].setAttribute("transform", t[l]);
+      for (c = 0; c < contacts.length; ++c) contacts[c].setAttribute("transform", u[c]);
+    }
+    setHidden(t === null);
+    valueOut.textContent = String(d.inputs[i]);
+    indexOut.textContent = String(i + 1);
+    statusOut.textContent = d.status_texts[d.status[i]];
+    statusOut.className = d.status_kinds[d.status[i]];
+    slider.value = String(i);
+  }
+  // Playing: about six seconds per sweep (10 to 60 poses per second), from the pose shown, looping.
+  var rate = Math.min(60, Math.max(10, n / 6)), playing = false, t0 = null, from = 0;
+  function tick(now) {
+    if (!playing) return;
+    if (t0 === null) t0 = now;
+    show((from + Math.floor((now - t0) * rate / 1000)) % n);
+    window.requestAnimationFrame(tick);
+  }
+  function setPlaying(on) {
+    playing = on;
+    button.textContent = on ? "Pause" : "Play";
+    button.setAttribute("aria-pressed", on ? "true" : "false");
+    if (on) {
+      t0 = null;
+      from = shown === n - 1 ? 0 : shown;
+      window.requestAnimationFrame(tick);
+    }
+  }
+  button.addEventListener("click", function () { setPlaying(!playing); });
+  slider.addEventListener("input", function () { show(Number(slider.value)); t0 = null; from = shown; });
+  document.getElementById("show-traces").addEventListener("change", function (e) {
+    svg.classList.toggle("no-traces", !e.target.checked);
+  });
+  document.getElementById("show-centrodes").addEventListener("change", function (e) {
+    svg.classList.toggle("no-centrodes", !e.target.checked);
+  });
+  show(d.start);
+})();
+)JS";
+
+std::string fixed2(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string animation_html(const OutputContext& ctx) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const std::vector<LinkSketch> sketches = link_sketches(m);
+  const Frames f = frames_of(ctx);
+  const LinkCentrodes centrodes = centrodes_of(ctx);
+  const std::size_t n = f.has.size();
+  std::size_t start = 0;  // the first pose with values
+  while (start + 1 < n && !f.has[start]) ++start;
+  const bool shown = n > 0 && f.has[start];  // the pose drawn before the script runs has values
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<int> contacts = contact_pairs(m);  // in the order of the contact points
+
+  // World to pixels (y up): pixel = (ox + s x, oy - s y), the extent centred with a margin.
+  const Eigen::Vector4d box = extent(sketches, f);
+  const double w = std::max(box(2) - box(0), 1e-12 * m.length_scale), h = std::max(box(3) - box(1), 1e-12 * m.length_scale);
+  const double s = std::min((kWidth - 2 * kMargin) / w, (kHeight - 2 * kMargin) / h);
+  const double ox = kWidth / 2.0 - s * (box(0) + box(2)) / 2, oy = kHeight / 2.0 + s * (box(1) + box(3)) / 2;
+  const double px = 1 / s;  // one pixel in world units (marker sizes)
+
+  const std::string name = io::xml_escape(base_name(ctx.scene.file));
+  const std::string unit = io::xml_escape(input_column_unit(ctx));
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>" + name +
+      ": animation (rollkin)</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
+      std::to_string(n) + " poses of the sweep of " + io::xml_escape(ctx.sweep.input) + "</h1>\n" +
+      "<div id=\"controls\">\n<button id=\"play\" type=\"button\" aria-pressed=\"false\">Play</button>\n" +
+      "<input id=\"pose\" type=\"range\" min=\"0\" max=\"" + std::to_string(n ? n - 1 : 0) + "\" step=\"1\" value=\"" +
+      std::to_string(start) + "\" aria-label=\"pose\"/>\n<span><span id=\"input-name\">" +
+      io::xml_escape(m.variables[ctx.sweep.variable].name) + "</span> = <output id=\"input-value\">" +
+      (n ? io::format_double(input_column(ctx, start)) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
+      "</span>\n<span>pose <output id=\"pose-index\">" + std::to_string(start + 1) + "</output>/" + std::to_string(n) +
+      "</span>\n<output id=\"status\"></output>\n" +
+      "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n" +
+      "<label><input id=\"show-centrodes\" type=\"checkbox\"/> centrodes</label>\n</div>\n";
+
+  html += "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + std::to_string(kWidth) + "\" height=\"" +
+          std::to_string(kHeight) + "\" viewBox=\"0 0 " + std::to_string(kWidth) + " " + std::to_string(kHeight) + "\">\n" +
+          "<rect width=\"" + std::to_string(kWidth) + "\" height=\"" + std::to_string(kHeight) + "\" fill=\"#ffffff\"/>\n" +
+          "<g transform=\"matrix(" + num(s) + " 0 0 " + num(-s) + " " + fixed2(ox) + " " + fixed2(oy) + ")\">\n";
+  // Drawn once: the contact points' paths (world) ...
+  for (std::size_t slot = 0; slot < contacts.size(); ++slot) {
+    std::vector<Eigen::Vector2d> path;
+    for (std::size_t k = 0; k < n; ++k) path.push_back(f.has[k] ? f.contacts[k][slot] : Eigen::Vector2d(nan, nan));
+    html += "<path class=\"trace\" stroke=\"#d62728\" stroke-width=\"1\" stroke-dasharray=\"4 3\" stroke-opacity=\"0.7\" d=\"" +
+            path_data(path, false) + "\"><title>path of the contact point of " +
+            io::xml_escape(m.pairs[contacts[slot]].name) + "</title></path>\n";
+  }
+  // ... and each link in its own frame, moved by its transform.
+  for (std::size_t l = 0; l < sketches.size(); ++l) {
+    const LinkSketch& k = sketches[l];
+    const std::string color = k.color;
+    html += "<g id=\"link-" + std::to_string(l) + "\" class=\"link\" transform=\"" +
+            (shown ? transform_of(f.links[start][l]) : std::string("translate(0 0) rotate(0)")) + "\"" +
+            (shown || static_cast<int>(l) == m.ground ? "" : " visibility=\"hidden\"") + ">\n<title>" +
+            io::xml_escape(m.links[l].name) + "</title>\n";
+    if (static_cast<int>(l) == m.ground)
+      for (std::size_t o = 0; o < sketches.size(); ++o)
+        if (!centrodes.fixed[o].empty())
+          html += "<path class=\"centrode\" stroke=\"" + sketches[o].color + "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\" d=\"" +
+                  path_data(centrodes.fixed[o], false) + "\"><title>fixed centrode of " + io::xml_escape(m.links[o].name) +
+                  "</title></path>\n";
+    if (!centrodes.moving[l].empty())
+      html += "<path class=\"centrode\" stroke=\"" + color + "\" stroke-width=\"1.2\" stroke-dasharray=\"6 3\" d=\"" +
+              path_data(centrodes.moving[l], false) + "\"><title>moving centrode of " + io::xml_escape(m.links[l].name) +
+              "</title></path>\n";
+    for (std::size_t c = 0; c < k.contours.size(); ++c)
+      html += "<path class=\"contour\" stroke=\"" + color + "\" stroke-width=\"1.6\" d=\"" + path_data(k.contours[c], k.closed[c]) + "\"/>\n";
+    if (!k.body.empty())
+      html += "<path class=\"body\" stroke=\"" + color + "\" stroke-width=\"2.4\" d=\"" + path_data(k.body, false) + "\"/>\n";
+    for (const auto& p : k.joints)
+      html += "<circle class=\"joint\" cx=\"" + num(p.x()) + "\" cy=\"" + num(p.y()) + "\" r=\"" + num(3.5 * px) +
+              "\" fill=\"#ffffff\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n";
+    for (std::size_t j = 0; j < k.pivots.size(); ++j) {
+      const Eigen::Vector2d& p = k.pivots[j];
+      html += "<rect x=\"" + num(p.x() - 5 * px) + "\" y=\"" + num(p.y() - 5 * px) + "\" width=\"" + num(10 * px) +
+              "\" height=\"" + num(10 * px) + "\" fill=\"#000000\"/>\n<text transform=\"translate(" + num(p.x()) + " " +
+              num(p.y()) + ") scale(" + num(px) + " " + num(-px) + ")\" x=\"7\" y=\"16\" font-size=\"12\">" +
+              io::xml_escape(k.pivot_names[j]) + "</text>\n";
+    }
+    html += "</g>\n";
+  }
+  // The contact points, moved by their transforms.
+  for (std::size_t slot = 0; slot < contacts.size(); ++slot) {
+    const Eigen::Vector2d at = shown ? f.contacts[start][slot] : Eigen::Vector2d::Zero();
+    html += "<circle id=\"contact-" + std::to_string(slot) + "\" class=\"contact\" r=\"" + num(3.5 * px) +
+            "\" fill=\"#d62728\" transform=\"translate(" + num(at.x()) + " " + num(at.y()) + ")\"" +
+            (shown ? "" : " visibility=\"hidden\"") + "><title>contact " + io::xml_escape(m.pairs[contacts[slot]].name) +
+            "</title></circle>\n";
+  }
+  html += "</g>\n</svg>\n";
+  html += "<script>//<![CDATA[\nvar rollkinData = " + page_data(ctx, f, start) + ";\n" + kScript + "//]]>\n</script>\n</body>\n</html>\n";
+  return html;
+}
+
+}  // namespace rollkin::cli
