@@ -119,12 +119,14 @@ Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f)
 }
 
 /// The centrodes of every moving link relative to the ground (centrodes.hpp): per link its moving centrode
-/// (in its own frame) and, per link, the fixed centrode (in the ground's frame).
+/// (in its own frame) and its fixed centrode (in the ground's frame). Only the part whose world point lies
+/// within `view` (xmin, ymin, xmax, ymax) is kept: where two links turn at nearly the same rate the centre runs
+/// off far away, and a path thousands of pictures long would only cost drawing time.
 struct LinkCentrodes {
   std::vector<std::vector<Eigen::Vector2d>> fixed, moving;  // per link (empty for the ground)
 };
 
-LinkCentrodes centrodes_of(const OutputContext& ctx) {
+LinkCentrodes centrodes_of(const OutputContext& ctx, const Eigen::Vector4d& view) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   KinematicsData<double> kin(m);
   LinkCentrodes out;
@@ -135,8 +137,10 @@ LinkCentrodes centrodes_of(const OutputContext& ctx) {
   for (std::size_t l = 0; l < m.links.size(); ++l) {
     if (static_cast<int>(l) == m.ground) continue;
     for (const InstantCentre<double>& c : centrodes(m, kin, ctx.result, m.ground, static_cast<int>(l))) {
-      out.fixed[l].push_back(c.finite ? Eigen::Vector2d(c.in_a) : none);
-      out.moving[l].push_back(c.finite ? Eigen::Vector2d(c.in_b) : none);
+      const bool shown = c.finite && c.world.x() >= view(0) && c.world.y() >= view(1) && c.world.x() <= view(2) &&
+                         c.world.y() <= view(3);
+      out.fixed[l].push_back(shown ? Eigen::Vector2d(c.in_a) : none);
+      out.moving[l].push_back(shown ? Eigen::Vector2d(c.in_b) : none);
     }
   }
   return out;
@@ -201,7 +205,7 @@ const char* const kStyle = R"CSS(
 body { font: 14px sans-serif; margin: 12px; color: #222; }
 h1 { font-size: 16px; margin: 0 0 8px 0; }
 #controls { display: flex; flex-wrap: wrap; gap: 14px; align-items: center; margin-bottom: 6px; }
-#pose { width: 340px; }
+#pose { width: 280px; }
 #play { width: 64px; }
 #status.ok { color: #2a7d2a; }
 #status.warn { color: #b8860b; font-weight: bold; }
@@ -299,7 +303,6 @@ std::string animation_html(const OutputContext& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const std::vector<LinkSketch> sketches = link_sketches(m);
   const Frames f = frames_of(ctx);
-  const LinkCentrodes centrodes = centrodes_of(ctx);
   const std::size_t n = f.has.size();
   std::size_t start = 0;  // the first pose with values
   while (start + 1 < n && !f.has[start]) ++start;
@@ -313,6 +316,9 @@ std::string animation_html(const OutputContext& ctx) {
   const double s = std::min((kWidth - 2 * kMargin) / w, (kHeight - 2 * kMargin) / h);
   const double ox = kWidth / 2.0 - s * (box(0) + box(2)) / 2, oy = kHeight / 2.0 + s * (box(1) + box(3)) / 2;
   const double px = 1 / s;  // one pixel in world units (marker sizes)
+  // The centrodes within the picture and as much again around it.
+  const Eigen::Vector4d around(box(0) - w, box(1) - h, box(2) + w, box(3) + h);
+  const LinkCentrodes centrodes = centrodes_of(ctx, around);
 
   const std::string name = io::xml_escape(base_name(ctx.scene.file));
   const std::string unit = io::xml_escape(input_column_unit(ctx));
