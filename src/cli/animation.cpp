@@ -6,6 +6,7 @@
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -42,7 +43,8 @@ std::string js_string(const std::string& text) {
   return out + "\"";
 }
 
-/// SVG path data through the points ("M x y L x y ...", "Z" when closed); a non-finite point breaks it.
+/// SVG path data through the points ("M x y x y ...": coordinates after a moveto are linetos; "Z" when
+/// closed); a non-finite point breaks the path, the next finite one starts a new piece.
 std::string path_data(const std::vector<Eigen::Vector2d>& pts, bool closed) {
   std::string d;
   bool drawing = false, broken = false;
@@ -53,12 +55,22 @@ std::string path_data(const std::vector<Eigen::Vector2d>& pts, bool closed) {
       continue;
     }
     d += (d.empty() ? "" : " ") + std::string(drawing ? "" : "M") + num(p.x()) + " " + num(p.y());
-    if (!drawing) d += " L";
     drawing = true;
   }
-  if (!d.empty() && d.compare(d.size() - 2, 2, " L") == 0) d.resize(d.size() - 2);
   if (closed && !broken && !d.empty()) d += " Z";
   return d;
+}
+
+/// Whether the finite points spread over more than `size` in x or y (a centrode that stays within one pixel,
+/// such as that of a link turning about a ground pivot, is not drawn).
+bool spans(const std::vector<Eigen::Vector2d>& pts, double size) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Eigen::Vector2d& p : pts)
+    if (p.allFinite()) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  return (hi - lo).maxCoeff() > size;
 }
 
 /// A link pose as the CSV's <link>.x, <link>.y, <link>.angle columns give it (angle in degrees).
@@ -95,26 +107,28 @@ Frames frames_of(const OutputContext& ctx) {
   return f;
 }
 
-/// World box (xmin, ymin, xmax, ymax) of the links' drawings and the contact points over all poses with values.
-Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f) {
+/// World box (xmin, ymin, xmax, ymax) of the links' drawings and the contact points over all poses with
+/// values, and of the ground's drawing (in the world frame: link_poses()) also when no pose has values.
+Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f, int ground) {
   const double inf = std::numeric_limits<double>::infinity();
   Eigen::Vector4d box(inf, inf, -inf, -inf);
   auto add = [&](const Eigen::Vector2d& p) {
     if (!p.allFinite()) return;
     box << std::min(box(0), p.x()), std::min(box(1), p.y()), std::max(box(2), p.x()), std::max(box(3), p.y());
   };
+  auto add_link = [&](const LinkSketch& k, const SE2<double>& at) {
+    for (const auto& c : k.contours)
+      for (const auto& p : c) add(at.act(p));
+    for (const auto& p : k.body) add(at.act(p));
+    for (const auto& p : k.pivots) add(at.act(p));
+  };
+  add_link(sketches[static_cast<std::size_t>(ground)], SE2<double>());
   for (std::size_t k = 0; k < f.has.size(); ++k) {
     if (!f.has[k]) continue;
-    for (std::size_t l = 0; l < sketches.size(); ++l) {
-      const SE2<double>& at = f.links[k][l];
-      for (const auto& c : sketches[l].contours)
-        for (const auto& p : c) add(at.act(p));
-      for (const auto& p : sketches[l].body) add(at.act(p));
-      for (const auto& p : sketches[l].pivots) add(at.act(p));
-    }
+    for (std::size_t l = 0; l < sketches.size(); ++l) add_link(sketches[l], f.links[k][l]);
     for (const auto& p : f.contacts[k]) add(p);
   }
-  if (!(box(0) <= box(2))) box << -1, -1, 1, 1;  // nothing solved
+  if (!(box(0) <= box(2))) box << -1, -1, 1, 1;  // nothing drawn
   return box;
 }
 
@@ -281,9 +295,8 @@ const char* const kScript = R"JS(
   }
   button.addEventListener("click", function () { setPlaying(!playing); });
   slider.addEventListener("input", function () { show(Number(slider.value)); t0 = null; from = shown; });
-  document.getElementById("show-traces").addEventListener("change", function (e) {
-    svg.classList.toggle("no-traces", !e.target.checked);
-  });
+  var traces = document.getElementById("show-traces");  // (none without contact pairs)
+  if (traces !== null) traces.addEventListener("change", function (e) { svg.classList.toggle("no-traces", !e.target.checked); });
   document.getElementById("show-centrodes").addEventListener("change", function (e) {
     svg.classList.toggle("no-centrodes", !e.target.checked);
   });
@@ -311,7 +324,7 @@ std::string animation_html(const OutputContext& ctx) {
   const std::vector<int> contacts = contact_pairs(m);  // in the order of the contact points
 
   // World to pixels (y up): pixel = (ox + s x, oy - s y), the extent centred with a margin.
-  const Eigen::Vector4d box = extent(sketches, f);
+  const Eigen::Vector4d box = extent(sketches, f, m.ground);
   const double w = std::max(box(2) - box(0), 1e-12 * m.length_scale), h = std::max(box(3) - box(1), 1e-12 * m.length_scale);
   const double s = std::min((kWidth - 2 * kMargin) / w, (kHeight - 2 * kMargin) / h);
   const double ox = kWidth / 2.0 - s * (box(0) + box(2)) / 2, oy = kHeight / 2.0 + s * (box(1) + box(3)) / 2;
@@ -333,7 +346,7 @@ std::string animation_html(const OutputContext& ctx) {
       (n ? io::format_double(input_column(ctx, start)) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
       "</span>\n<span>pose <output id=\"pose-index\">" + std::to_string(start + 1) + "</output>/" + std::to_string(n) +
       "</span>\n<output id=\"status\"></output>\n" +
-      "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n" +
+      (contacts.empty() ? "" : "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n") +
       "<label><input id=\"show-centrodes\" type=\"checkbox\"/> centrodes</label>\n</div>\n";
 
   html += "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + std::to_string(kWidth) + "\" height=\"" +
@@ -358,11 +371,11 @@ std::string animation_html(const OutputContext& ctx) {
             io::xml_escape(m.links[l].name) + "</title>\n";
     if (static_cast<int>(l) == m.ground)
       for (std::size_t o = 0; o < sketches.size(); ++o)
-        if (!centrodes.fixed[o].empty())
+        if (spans(centrodes.fixed[o], px))
           html += "<path class=\"centrode\" stroke=\"" + sketches[o].color + "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\" d=\"" +
                   path_data(centrodes.fixed[o], false) + "\"><title>fixed centrode of " + io::xml_escape(m.links[o].name) +
                   "</title></path>\n";
-    if (!centrodes.moving[l].empty())
+    if (spans(centrodes.moving[l], px))
       html += "<path class=\"centrode\" stroke=\"" + color + "\" stroke-width=\"1.2\" stroke-dasharray=\"6 3\" d=\"" +
               path_data(centrodes.moving[l], false) + "\"><title>moving centrode of " + io::xml_escape(m.links[l].name) +
               "</title></path>\n";
