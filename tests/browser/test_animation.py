@@ -14,6 +14,7 @@ neither break the page nor run script, and the browser log has no SEVERE entry (
 Prints one line per check and "N passed, M failed" last; exit status 1 when a check fails.
 """
 import csv
+import math
 import os
 import re
 import subprocess
@@ -62,7 +63,8 @@ for (var k of arguments[0]) {
   for (var g of document.querySelectorAll("g.link"))
     links.push({name: g.querySelector("title").textContent, transform: g.getAttribute("transform"),
                 visibility: g.getAttribute("visibility") || "visible"});
-  out.push({pose: k, value: document.getElementById("input-value").textContent,
+  var contacts = Array.from(document.querySelectorAll("circle.contact"), c => c.getAttribute("transform"));
+  out.push({pose: k, value: document.getElementById("input-value").textContent, contacts: contacts,
             index: document.getElementById("pose-index").textContent,
             status: document.getElementById("status").textContent, links: links});
 }
@@ -139,6 +141,19 @@ def main():
               "poses %s" % value_bad[:5])
         errors = [(s["pose"], e) for s in seen for e in transform_errors(s, rows[s["pose"]])]
         check("link transforms equal the CSV's <link>.x, .y, .angle at every pose (7 digits)", not errors, str(errors[:3]))
+        # The contact points against the geometry (examples/paper_fourbar.json): A lies on link3's rim (radius 1
+        # about link3's origin), B on link3's rim and on link4's (radius 4 about (2, 0) in link4's frame), with
+        # the link poses of the CSV.
+        def contact_errors(s, row):
+            pts = [tuple(map(float, re.match(r"^translate\(([^ ]+) ([^ )]+)\)$", t).groups())) for t in s["contacts"]]
+            l3 = (float(row["link3.x"]), float(row["link3.y"]))
+            a4 = math.radians(float(row["link4.angle"]))
+            c4 = (float(row["link4.x"]) + 2 * math.cos(a4), float(row["link4.y"]) + 2 * math.sin(a4))
+            d = [math.dist(pts[0], l3) - 1, math.dist(pts[1], l3) - 1, math.dist(pts[1], c4) - 4]
+            return [x for x in d if abs(x) > 1e-5]  # 7 digits of coordinates up to 10
+        errors = [(s["pose"], contact_errors(s, rows[s["pose"]])) for s in seen if contact_errors(s, rows[s["pose"]])]
+        check("contact points: A on link3's rim, B on link3's and link4's rims at every pose (1e-5)",
+              not errors and all(len(s["contacts"]) == 2 for s in seen), str(errors[:3]))
         check("four link groups named as the CSV's links", [l["name"] for l in seen[0]["links"]] == ["link1", "link2", "link3", "link4"])
         moved = [l["name"] for l, l0 in zip(seen[100]["links"], first["links"]) if l["transform"] != l0["transform"]]
         check("moving the slider to pose 100 changes the moving links' transforms", moved == ["link2", "link3", "link4"], str(moved))
@@ -186,6 +201,17 @@ def main():
                                                 [unsolved[0]])
         check("wide sweep: the contact points are hidden at an unsolved pose", contacts_hidden == "hidden")
         check("no SEVERE entry in the browser log (wide sweep)", not severe_log(driver), str(severe_log(driver)))
+
+        # ---- singular poses (the anti-parallelogram's folded poses): shown with their values, marked singular ---
+        rc, anti = solve(os.path.join(SRC, "examples", "antiparallelogram.json"), "anti.html", "anti.csv")
+        singular = [k for k, r in enumerate(anti) if r["status"] == "singular"]
+        driver.get("file://" + os.path.abspath("anti.html"))
+        seen = driver.execute_script(READ_POSES, singular)
+        bad = [(s["pose"], s["status"], transform_errors(s, anti[s["pose"]])) for s in seen
+               if not s["status"].startswith("singular: the values follow the branch") or transform_errors(s, anti[s["pose"]])
+               or any(l["visibility"] == "hidden" for l in s["links"])]
+        check("singular poses: the CSV's values shown, links visible, status says singular", singular and not bad, str(bad[:2]))
+        check("no SEVERE entry in the browser log (singular poses)", not severe_log(driver), str(severe_log(driver)))
 
         # ---- names with markup, script and control characters ---------------------------------------------------
         scene = open(EXAMPLE, encoding="utf-8").read()
