@@ -310,102 +310,139 @@ std::string fixed2(double v) {
   return buf;
 }
 
+/// What the page is made of: the links' drawings, the frames, the pose shown first and the view.
+struct Page {
+  const OutputContext& ctx;
+  const Mechanism<double>& m;
+  std::vector<LinkSketch> sketches;
+  Frames f;
+  std::vector<int> contacts;  // the contact pairs, in the order of the contact points
+  std::size_t start = 0;      // the pose shown first: the first with values
+  bool shown = false;         // ... and it has values
+  double scale = 1, ox = 0, oy = 0;  // world to pixels (y up): pixel = (ox + scale x, oy - scale y)
+  double px = 1;                     // one pixel in world units (marker sizes)
+  Eigen::Vector4d around;            // the picture and as much again around it (world)
+
+  explicit Page(const OutputContext& c)
+      : ctx(c), m(c.scene.mechanism), sketches(link_sketches(m)), f(frames_of(c)), contacts(contact_pairs(m)) {
+    const std::size_t n = f.has.size();
+    while (start + 1 < n && !f.has[start]) ++start;
+    shown = n > 0 && f.has[start];
+    // The extent centred with a margin.
+    const Eigen::Vector4d box = extent(sketches, f, m.ground);
+    const double w = std::max(box(2) - box(0), 1e-12 * m.length_scale), h = std::max(box(3) - box(1), 1e-12 * m.length_scale);
+    scale = std::min((kWidth - 2 * kMargin) / w, (kHeight - 2 * kMargin) / h);
+    ox = kWidth / 2.0 - scale * (box(0) + box(2)) / 2;
+    oy = kHeight / 2.0 + scale * (box(1) + box(3)) / 2;
+    px = 1 / scale;
+    around << box(0) - w, box(1) - h, box(2) + w, box(3) + h;
+  }
+};
+
+/// The page's head, title and controls: play/pause, the slider, the input value, the status, the toggles.
+std::string head_and_controls(const Page& p) {
+  const std::size_t n = p.f.has.size();
+  const std::string name = io::xml_escape(base_name(p.ctx.scene.file));
+  const std::string unit = io::xml_escape(input_column_unit(p.ctx));
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>" + name +
+         ": animation (rollkin)</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
+         std::to_string(n) + " poses of the sweep of " + io::xml_escape(p.ctx.sweep.input) + "</h1>\n" +
+         "<div id=\"controls\">\n<button id=\"play\" type=\"button\" aria-pressed=\"false\">Play</button>\n" +
+         "<input id=\"pose\" type=\"range\" min=\"0\" max=\"" + std::to_string(n ? n - 1 : 0) + "\" step=\"1\" value=\"" +
+         std::to_string(p.start) + "\" aria-label=\"pose\"/>\n<span><span id=\"input-name\">" +
+         io::xml_escape(p.m.variables[p.ctx.sweep.variable].name) + "</span> = <output id=\"input-value\">" +
+         (n ? io::format_double(input_column(p.ctx, p.start)) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
+         "</span>\n<span>pose <output id=\"pose-index\">" + std::to_string(p.start + 1) + "</output>/" + std::to_string(n) +
+         "</span>\n<output id=\"status\"></output>\n" +
+         (p.contacts.empty() ? "" : "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n") +
+         "<label><input id=\"show-centrodes\" type=\"checkbox\"/> centrodes</label>\n</div>\n";
+}
+
+/// The paths of the contact points over the sweep (world frame), drawn once.
+std::string contact_paths(const Page& p) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::string svg;
+  for (std::size_t slot = 0; slot < p.contacts.size(); ++slot) {
+    std::vector<Eigen::Vector2d> path;
+    for (std::size_t k = 0; k < p.f.has.size(); ++k) path.push_back(p.f.has[k] ? p.f.contacts[k][slot] : Eigen::Vector2d(nan, nan));
+    svg += "<path class=\"trace\" stroke=\"#d62728\" stroke-width=\"1\" stroke-dasharray=\"4 3\" stroke-opacity=\"0.7\" d=\"" +
+           path_data(path, false) + "\"><title>path of the contact point of " +
+           io::xml_escape(p.m.pairs[p.contacts[slot]].name) + "</title></path>\n";
+  }
+  return svg;
+}
+
+/// A centrode as a path of the given dash pattern, or nothing when it stays within a pixel.
+std::string centrode_path(const Page& p, const std::vector<Eigen::Vector2d>& pts, std::size_t link, const std::string& dash,
+                          const std::string& what) {
+  if (!spans(pts, p.px)) return "";
+  return "<path class=\"centrode\" stroke=\"" + p.sketches[link].color + "\" stroke-width=\"1.2\" stroke-dasharray=\"" + dash +
+         "\" d=\"" + path_data(pts, false) + "\"><title>" + what + " centrode of " + io::xml_escape(p.m.links[link].name) +
+         "</title></path>\n";
+}
+
+/// Link l drawn once in its own frame, in a group moved by its transform (that of the first pose shown):
+/// its centrodes, contours, body, joints and (the ground) pivots with their names.
+std::string link_group(const Page& p, const LinkCentrodes& centrodes, std::size_t l) {
+  const LinkSketch& k = p.sketches[l];
+  const bool ground = static_cast<int>(l) == p.m.ground;
+  std::string svg = "<g id=\"link-" + std::to_string(l) + "\" class=\"link\" transform=\"" +
+                    (p.shown ? transform_of(p.f.links[p.start][l]) : std::string("translate(0 0) rotate(0)")) + "\"" +
+                    (p.shown || ground ? "" : " visibility=\"hidden\"") + ">\n<title>" + io::xml_escape(p.m.links[l].name) +
+                    "</title>\n";
+  if (ground)
+    for (std::size_t o = 0; o < p.sketches.size(); ++o) svg += centrode_path(p, centrodes.fixed[o], o, "2 3", "fixed");
+  svg += centrode_path(p, centrodes.moving[l], l, "6 3", "moving");
+  for (std::size_t c = 0; c < k.contours.size(); ++c)
+    svg += "<path class=\"contour\" stroke=\"" + k.color + "\" stroke-width=\"1.6\" d=\"" + path_data(k.contours[c], k.closed[c]) + "\"/>\n";
+  if (!k.body.empty())
+    svg += "<path class=\"body\" stroke=\"" + k.color + "\" stroke-width=\"2.4\" d=\"" + path_data(k.body, false) + "\"/>\n";
+  for (const auto& j : k.joints)
+    svg += "<circle class=\"joint\" cx=\"" + num(j.x()) + "\" cy=\"" + num(j.y()) + "\" r=\"" + num(3.5 * p.px) +
+           "\" fill=\"#ffffff\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n";
+  for (std::size_t j = 0; j < k.pivots.size(); ++j) {
+    const Eigen::Vector2d& at = k.pivots[j];
+    // The name upright in pixels: the text's own frame undoes the world's scale and y flip.
+    svg += "<rect x=\"" + num(at.x() - 5 * p.px) + "\" y=\"" + num(at.y() - 5 * p.px) + "\" width=\"" + num(10 * p.px) +
+           "\" height=\"" + num(10 * p.px) + "\" fill=\"#000000\"/>\n<text transform=\"translate(" + num(at.x()) + " " +
+           num(at.y()) + ") scale(" + num(p.px) + " " + num(-p.px) + ")\" x=\"7\" y=\"16\" font-size=\"12\">" +
+           io::xml_escape(k.pivot_names[j]) + "</text>\n";
+  }
+  return svg + "</g>\n";
+}
+
+/// The contact points, each moved by its transform (that of the first pose shown).
+std::string contact_markers(const Page& p) {
+  std::string svg;
+  for (std::size_t slot = 0; slot < p.contacts.size(); ++slot) {
+    const Eigen::Vector2d at = p.shown ? p.f.contacts[p.start][slot] : Eigen::Vector2d::Zero();
+    svg += "<circle id=\"contact-" + std::to_string(slot) + "\" class=\"contact\" r=\"" + num(3.5 * p.px) +
+           "\" fill=\"#d62728\" transform=\"translate(" + num(at.x()) + " " + num(at.y()) + ")\"" +
+           (p.shown ? "" : " visibility=\"hidden\"") + "><title>contact " + io::xml_escape(p.m.pairs[p.contacts[slot]].name) +
+           "</title></circle>\n";
+  }
+  return svg;
+}
+
+/// The inline SVG: one world group (y up) holding the contact paths, the link groups and the contact points.
+std::string drawing(const Page& p) {
+  const LinkCentrodes centrodes = centrodes_of(p.ctx, p.around);
+  const std::string w = std::to_string(kWidth), h = std::to_string(kHeight);
+  std::string svg = "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w +
+                    " " + h + "\">\n<rect width=\"" + w + "\" height=\"" + h + "\" fill=\"#ffffff\"/>\n<g transform=\"matrix(" +
+                    num(p.scale) + " 0 0 " + num(-p.scale) + " " + fixed2(p.ox) + " " + fixed2(p.oy) + ")\">\n";
+  svg += contact_paths(p);
+  for (std::size_t l = 0; l < p.sketches.size(); ++l) svg += link_group(p, centrodes, l);
+  svg += contact_markers(p);
+  return svg + "</g>\n</svg>\n";
+}
+
 }  // namespace
 
 std::string animation_html(const OutputContext& ctx) {
-  const Mechanism<double>& m = ctx.scene.mechanism;
-  const std::vector<LinkSketch> sketches = link_sketches(m);
-  const Frames f = frames_of(ctx);
-  const std::size_t n = f.has.size();
-  std::size_t start = 0;  // the first pose with values
-  while (start + 1 < n && !f.has[start]) ++start;
-  const bool shown = n > 0 && f.has[start];  // the pose drawn before the script runs has values
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<int> contacts = contact_pairs(m);  // in the order of the contact points
-
-  // World to pixels (y up): pixel = (ox + s x, oy - s y), the extent centred with a margin.
-  const Eigen::Vector4d box = extent(sketches, f, m.ground);
-  const double w = std::max(box(2) - box(0), 1e-12 * m.length_scale), h = std::max(box(3) - box(1), 1e-12 * m.length_scale);
-  const double s = std::min((kWidth - 2 * kMargin) / w, (kHeight - 2 * kMargin) / h);
-  const double ox = kWidth / 2.0 - s * (box(0) + box(2)) / 2, oy = kHeight / 2.0 + s * (box(1) + box(3)) / 2;
-  const double px = 1 / s;  // one pixel in world units (marker sizes)
-  // The centrodes within the picture and as much again around it.
-  const Eigen::Vector4d around(box(0) - w, box(1) - h, box(2) + w, box(3) + h);
-  const LinkCentrodes centrodes = centrodes_of(ctx, around);
-
-  const std::string name = io::xml_escape(base_name(ctx.scene.file));
-  const std::string unit = io::xml_escape(input_column_unit(ctx));
-  std::string html =
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>" + name +
-      ": animation (rollkin)</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
-      std::to_string(n) + " poses of the sweep of " + io::xml_escape(ctx.sweep.input) + "</h1>\n" +
-      "<div id=\"controls\">\n<button id=\"play\" type=\"button\" aria-pressed=\"false\">Play</button>\n" +
-      "<input id=\"pose\" type=\"range\" min=\"0\" max=\"" + std::to_string(n ? n - 1 : 0) + "\" step=\"1\" value=\"" +
-      std::to_string(start) + "\" aria-label=\"pose\"/>\n<span><span id=\"input-name\">" +
-      io::xml_escape(m.variables[ctx.sweep.variable].name) + "</span> = <output id=\"input-value\">" +
-      (n ? io::format_double(input_column(ctx, start)) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
-      "</span>\n<span>pose <output id=\"pose-index\">" + std::to_string(start + 1) + "</output>/" + std::to_string(n) +
-      "</span>\n<output id=\"status\"></output>\n" +
-      (contacts.empty() ? "" : "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n") +
-      "<label><input id=\"show-centrodes\" type=\"checkbox\"/> centrodes</label>\n</div>\n";
-
-  html += "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + std::to_string(kWidth) + "\" height=\"" +
-          std::to_string(kHeight) + "\" viewBox=\"0 0 " + std::to_string(kWidth) + " " + std::to_string(kHeight) + "\">\n" +
-          "<rect width=\"" + std::to_string(kWidth) + "\" height=\"" + std::to_string(kHeight) + "\" fill=\"#ffffff\"/>\n" +
-          "<g transform=\"matrix(" + num(s) + " 0 0 " + num(-s) + " " + fixed2(ox) + " " + fixed2(oy) + ")\">\n";
-  // Drawn once: the contact points' paths (world) ...
-  for (std::size_t slot = 0; slot < contacts.size(); ++slot) {
-    std::vector<Eigen::Vector2d> path;
-    for (std::size_t k = 0; k < n; ++k) path.push_back(f.has[k] ? f.contacts[k][slot] : Eigen::Vector2d(nan, nan));
-    html += "<path class=\"trace\" stroke=\"#d62728\" stroke-width=\"1\" stroke-dasharray=\"4 3\" stroke-opacity=\"0.7\" d=\"" +
-            path_data(path, false) + "\"><title>path of the contact point of " +
-            io::xml_escape(m.pairs[contacts[slot]].name) + "</title></path>\n";
-  }
-  // ... and each link in its own frame, moved by its transform.
-  for (std::size_t l = 0; l < sketches.size(); ++l) {
-    const LinkSketch& k = sketches[l];
-    const std::string color = k.color;
-    html += "<g id=\"link-" + std::to_string(l) + "\" class=\"link\" transform=\"" +
-            (shown ? transform_of(f.links[start][l]) : std::string("translate(0 0) rotate(0)")) + "\"" +
-            (shown || static_cast<int>(l) == m.ground ? "" : " visibility=\"hidden\"") + ">\n<title>" +
-            io::xml_escape(m.links[l].name) + "</title>\n";
-    if (static_cast<int>(l) == m.ground)
-      for (std::size_t o = 0; o < sketches.size(); ++o)
-        if (spans(centrodes.fixed[o], px))
-          html += "<path class=\"centrode\" stroke=\"" + sketches[o].color + "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\" d=\"" +
-                  path_data(centrodes.fixed[o], false) + "\"><title>fixed centrode of " + io::xml_escape(m.links[o].name) +
-                  "</title></path>\n";
-    if (spans(centrodes.moving[l], px))
-      html += "<path class=\"centrode\" stroke=\"" + color + "\" stroke-width=\"1.2\" stroke-dasharray=\"6 3\" d=\"" +
-              path_data(centrodes.moving[l], false) + "\"><title>moving centrode of " + io::xml_escape(m.links[l].name) +
-              "</title></path>\n";
-    for (std::size_t c = 0; c < k.contours.size(); ++c)
-      html += "<path class=\"contour\" stroke=\"" + color + "\" stroke-width=\"1.6\" d=\"" + path_data(k.contours[c], k.closed[c]) + "\"/>\n";
-    if (!k.body.empty())
-      html += "<path class=\"body\" stroke=\"" + color + "\" stroke-width=\"2.4\" d=\"" + path_data(k.body, false) + "\"/>\n";
-    for (const auto& p : k.joints)
-      html += "<circle class=\"joint\" cx=\"" + num(p.x()) + "\" cy=\"" + num(p.y()) + "\" r=\"" + num(3.5 * px) +
-              "\" fill=\"#ffffff\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n";
-    for (std::size_t j = 0; j < k.pivots.size(); ++j) {
-      const Eigen::Vector2d& p = k.pivots[j];
-      html += "<rect x=\"" + num(p.x() - 5 * px) + "\" y=\"" + num(p.y() - 5 * px) + "\" width=\"" + num(10 * px) +
-              "\" height=\"" + num(10 * px) + "\" fill=\"#000000\"/>\n<text transform=\"translate(" + num(p.x()) + " " +
-              num(p.y()) + ") scale(" + num(px) + " " + num(-px) + ")\" x=\"7\" y=\"16\" font-size=\"12\">" +
-              io::xml_escape(k.pivot_names[j]) + "</text>\n";
-    }
-    html += "</g>\n";
-  }
-  // The contact points, moved by their transforms.
-  for (std::size_t slot = 0; slot < contacts.size(); ++slot) {
-    const Eigen::Vector2d at = shown ? f.contacts[start][slot] : Eigen::Vector2d::Zero();
-    html += "<circle id=\"contact-" + std::to_string(slot) + "\" class=\"contact\" r=\"" + num(3.5 * px) +
-            "\" fill=\"#d62728\" transform=\"translate(" + num(at.x()) + " " + num(at.y()) + ")\"" +
-            (shown ? "" : " visibility=\"hidden\"") + "><title>contact " + io::xml_escape(m.pairs[contacts[slot]].name) +
-            "</title></circle>\n";
-  }
-  html += "</g>\n</svg>\n";
-  html += "<script>//<![CDATA[\nvar rollkinData = " + page_data(ctx, f, start) + ";\n" + kScript + "//]]>\n</script>\n</body>\n</html>\n";
-  return html;
+  const Page p(ctx);
+  return head_and_controls(p) + drawing(p) + "<script>//<![CDATA[\nvar rollkinData = " + page_data(ctx, p.f, p.start) +
+         ";\n" + kScript + "//]]>\n</script>\n</body>\n</html>\n";
 }
 
 }  // namespace rollkin::cli
