@@ -6,7 +6,8 @@
 // the per-pose link poses (x, y, angle in degrees, 7 significant digits: the CSV's <link>.x, <link>.y,
 // <link>.angle columns rounded) written into the page as JSON. The contact points move along the same way
 // (one transform each per frame); their paths over the sweep and the centrodes of every moving link relative
-// to the ground (fixed one in the ground's frame, moving one in the link's) are drawn once.
+// to the ground (fixed one in the ground's frame, moving one in the link's; the part within the picture and as
+// much around it, none for a centre that stays within a pixel) are drawn once.
 // Controls: a play/pause button, a slider over the poses (in CSV row order), the input value (the CSV's input
 // column) and the pose's status. A pose that was not solved shows its status and hides the moving links
 // (nothing is interpolated); a singular pose shows its values and says they follow the branch.
