@@ -22,12 +22,14 @@ log() { echo "[setup] $*" >&2; }
 # Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
 # and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json; libdxflib (DXF) and pugixml (SVG/XML)
 # readers; CLI11 (command-line parsing of build/rollkin and the benchmark); ezdxf and svgelements, independent
-# producers and readers of the CAD test files.
+# producers and readers of the CAD test files; chromium, its driver and selenium for the browser test of the
+# --animate page (tests/browser/test_animation.py).
 packages=(
   g++ cmake make
   libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
   libdxflib-dev libpugixml-dev libcli11-dev
   python3 python3-ezdxf python3-svgelements
+  chromium chromium-driver python3-selenium
 )
 
 installed() { dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed'; }

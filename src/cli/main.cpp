@@ -1,7 +1,7 @@
 // build/rollkin: the command-line tool.
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
-//                       [--rates] [--verbose] [--interference] [--max-steps N]
+//                       [--animate FILE.html] [--rates] [--analysis] [--verbose] [--interference] [--max-steps N]
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] [--max-steps N] --csv FILE
 //   rollkin centrodes SCENE --links A B [--from V --to V --step V] [--max-steps N] --out PREFIX
 //   rollkin --help | --version;  rollkin COMMAND --help
@@ -12,9 +12,14 @@
 // output file written; 3 out of memory ("out of memory while ..."), no output file written. Outputs are all
 // or nothing (rollkin/io/output_set.hpp).
 //
+// --animate writes one self-contained HTML page (inline SVG and script, no external file) that plays the
+// solved poses: a play/pause button, a slider over the poses, the input value and each pose's status
+// (src/cli/animation.hpp).
+//
 // The command line is parsed by CLI11. Each command is one section below: its options struct, the function
 // that declares its options (descriptions are the --help text) and the function that runs it; main() lists
 // the commands. A new command is one more such section and one line in main().
+#include "animation.hpp"
 #include "output.hpp"
 
 #include "rollkin/io/output_set.hpp"
@@ -334,7 +339,7 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
 
 struct SolveOptions {
   SweepRequest sweep;
-  std::string csv, plot, draw;
+  std::string csv, plot, draw, animate;
   bool rates = false, analysis = false, verbose = false, interference = false;
 };
 
@@ -347,6 +352,8 @@ Command solve_command(CLI::App& rollkin) {
   add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
   add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
   add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at about five poses across the solved range");
+  add_output(*app, "--animate", o->animate,
+             "self-contained HTML page animating the mechanism over the solved poses (play/pause, slider)");
   app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
   app->add_flag("--analysis", o->analysis,
                 "add the contact analysis columns to the CSV and charts to the plot: pressure angle, sliding, "
@@ -370,7 +377,7 @@ Command solve_command(CLI::App& rollkin) {
 
 /// `rollkin solve`: assembly, sweep, outputs, summary on stdout, one line per problem on stderr.
 int run_solve(const SolveOptions& o) {
-  SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}});
+  SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}});
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
   const std::vector<double>& inputs = run.inputs;
@@ -391,6 +398,7 @@ int run_solve(const SolveOptions& o) {
   run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
   run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
   run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
+  run.set_output("--animate", [&] { return cli::animation_html(ctx); });
   g_doing = "writing the output files";
   run.outputs.commit();
   g_doing = "reporting";

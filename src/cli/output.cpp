@@ -27,8 +27,6 @@ double out_scale(const Mechanism<double>& m, int var) {
   return m.variables[var].kind == ParamKind::Angle ? io::from_radians(1.0, kOutputAngle) : 1.0;
 }
 
-std::string base_name(const std::string& file) { return std::filesystem::path(file).filename().string(); }
-
 std::string axis_label(const OutputContext& ctx, int var) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   switch (m.variables[var].kind) {
@@ -44,13 +42,6 @@ std::string strip_header(const std::string& svg) {
   return at == std::string::npos ? svg : svg.substr(at);
 }
 
-/// The contact pairs (cam and rolling), in the order of the analysis columns.
-std::vector<int> contact_pairs(const Mechanism<double>& m) {
-  std::vector<int> k;
-  for (std::size_t p = 0; p < m.pairs.size(); ++p)
-    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
-  return k;
-}
 const char* const kContactColumns[] = {"pressure_angle", "sliding", "slide_to_roll", "kappa1", "kappa2", "relative_curvature"};
 const std::size_t kContactColumnCount = sizeof(kContactColumns) / sizeof(kContactColumns[0]);
 
@@ -204,6 +195,31 @@ SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double
   return out;
 }
 
+std::vector<int> contact_pairs(const Mechanism<double>& m) {
+  std::vector<int> k;
+  for (std::size_t p = 0; p < m.pairs.size(); ++p)
+    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
+  return k;
+}
+
+std::string base_name(const std::string& file) { return std::filesystem::path(file).filename().string(); }
+
+std::string input_column_unit(const OutputContext& ctx) {
+  switch (ctx.scene.mechanism.variables[ctx.sweep.variable].kind) {
+    case ParamKind::Angle: return io::unit_label(kOutputAngle);
+    case ParamKind::Length: return ctx.scene.length_unit;
+    case ParamKind::Unitless: return "";
+  }
+  return "";
+}
+
+double input_column(const OutputContext& ctx, std::size_t r) {
+  // From the requested values in file units (exact grid values for a "deg" file).
+  const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle &&
+                                  ctx.scene.mechanism.variables[ctx.sweep.variable].kind == ParamKind::Angle;
+  return radians_file_angle ? io::from_radians(ctx.inputs[r], kOutputAngle) : ctx.inputs[r];
+}
+
 std::string csv_text(const OutputContext& ctx, bool rates) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;
@@ -227,11 +243,9 @@ std::string csv_text(const OutputContext& ctx, bool rates) {
   io::CsvWriter csv(cols, "status");
   KinematicsData<double> kin(m);
   const double in_scale = out_scale(m, input);
-  // The input column from the requested values in file units (exact grid values for a "deg" file).
-  const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle && m.variables[input].kind == ParamKind::Angle;
   for (std::size_t r = 0; r < ctx.result.poses.size(); ++r) {
     const auto& pose = ctx.result.poses[r];
-    std::vector<double> row{radians_file_angle ? io::from_radians(ctx.inputs[r], kOutputAngle) : ctx.inputs[r]};
+    std::vector<double> row{input_column(ctx, r)};
     const bool ok = pose.report.has_pose();  // values also for singular poses
     for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
     if (rates)
@@ -364,6 +378,52 @@ std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCent
   return io::dxf_text(splines, ctx.scene.length_unit);
 }
 
+std::vector<LinkSketch> link_sketches(const Mechanism<double>& m) {
+  std::vector<LinkSketch> s(m.links.size());
+  for (std::size_t l = 0; l < s.size(); ++l)
+    s[l].color = static_cast<int>(l) == m.ground ? "#000000" : io::palette_color(l);
+  for (const auto& c : m.contours) {
+    LinkSketch& k = s[static_cast<std::size_t>(c.link())];
+    const Domain<double> dom = c.domain();
+    const int n = 200;
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i < n; ++i) pts.push_back(c.jet(dom.sample(i, n), 0).p);
+    k.contours.push_back(std::move(pts));
+    k.closed.push_back(dom.closed);
+  }
+  // Bodies: the joints and contour origins of each moving link.
+  for (std::size_t l = 0; l < s.size(); ++l) {
+    if (static_cast<int>(l) == m.ground) continue;
+    std::vector<Eigen::Vector2d> anchors;
+    for (const auto& p : m.pairs) {
+      if (is_contact(p.kind)) continue;
+      if (p.link_a == static_cast<int>(l)) anchors.push_back(p.frame_a.translation());
+      if (p.link_b == static_cast<int>(l)) anchors.push_back(p.frame_b.translation());
+    }
+    for (const auto& c : m.contours)
+      if (c.link() == static_cast<int>(l)) anchors.push_back(c.placement().translation());
+    if (anchors.size() >= 2) s[l].body = std::move(anchors);
+  }
+  for (const auto& p : m.pairs) {
+    if (is_contact(p.kind)) continue;
+    if (p.link_a != m.ground && p.link_b != m.ground) {
+      s[static_cast<std::size_t>(p.link_a)].joints.push_back(p.frame_a.translation());
+    } else {
+      LinkSketch& g = s[static_cast<std::size_t>(m.ground)];
+      g.pivots.push_back(p.link_a == m.ground ? p.frame_a.translation() : p.frame_b.translation());
+      g.pivot_names.push_back(p.name);
+    }
+  }
+  return s;
+}
+
+std::vector<Eigen::Vector2d> contact_points(const Mechanism<double>& m, const KinematicsData<double>& kin,
+                                            const std::vector<SE2<double>>& lp) {
+  std::vector<Eigen::Vector2d> out;
+  for (int p : contact_pairs(m)) out.push_back(lp[m.pairs[p].link_a].act(kin.pairs[p].contact[0].p));
+  return out;
+}
+
 std::string draw_svg(const OutputContext& ctx) {
   const io::Scene& scene = ctx.scene;
   const Mechanism<double>& m = scene.mechanism;
@@ -378,6 +438,7 @@ std::string draw_svg(const OutputContext& ctx) {
   for (std::size_t k = 0; k < count; ++k)
     pick.push_back(solved[count == 1 ? 0 : (k * (solved.size() - 1) + (count - 1) / 2) / (count - 1)]);
 
+  const std::vector<LinkSketch> sketches = link_sketches(m);
   io::SvgDrawing d(900, 680, 30);
   d.set_title(base_name(scene.file) + ": mechanism at " + std::to_string(count) + " pose(s), later poses darker");
   KinematicsData<double> kin(m);
@@ -390,45 +451,30 @@ std::string draw_svg(const OutputContext& ctx) {
     const double opacity = 0.2 + 0.8 * static_cast<double>(k + 1) / static_cast<double>(pick.size());
     evaluate_pairs<double>(m, pose.q, nullptr, 2, kin);
     const std::vector<SE2<double>> lp = link_poses(m, kin);
-    // Contours, 200 samples each, in world coordinates.
-    for (const auto& c : m.contours) {
-      const Domain<double> dom = c.domain();
-      const int n = 200;
-      std::vector<Eigen::Vector2d> pts;
-      for (int i = 0; i < n; ++i) pts.push_back(lp[c.link()].act(c.jet(dom.sample(i, n), 0).p));
-      io::Stroke st;
-      st.color = c.link() == m.ground ? "#000000" : io::palette_color(static_cast<std::size_t>(c.link()));
-      st.width = 1.6;
-      st.opacity = opacity;
-      d.add_polyline(pts, st, dom.closed);
-    }
-    // Link bodies: joints and contour origins of each moving link joined by a thin line.
-    for (std::size_t l = 0; l < m.links.size(); ++l) {
-      if (static_cast<int>(l) == m.ground) continue;
-      std::vector<Eigen::Vector2d> anchors;
-      for (const auto& p : m.pairs) {
-        if (is_contact(p.kind)) continue;
-        if (p.link_a == static_cast<int>(l)) anchors.push_back(lp[l].act(p.frame_a.translation()));
-        if (p.link_b == static_cast<int>(l)) anchors.push_back(lp[l].act(p.frame_b.translation()));
-      }
-      for (const auto& c : m.contours)
-        if (c.link() == static_cast<int>(l)) anchors.push_back(lp[l].act(c.placement().translation()));
-      if (anchors.size() >= 2) {
+    auto placed = [&](std::size_t l, const std::vector<Eigen::Vector2d>& pts) {
+      std::vector<Eigen::Vector2d> world;
+      for (const auto& p : pts) world.push_back(lp[l].act(p));
+      return world;
+    };
+    for (std::size_t l = 0; l < sketches.size(); ++l)
+      for (std::size_t c = 0; c < sketches[l].contours.size(); ++c) {
         io::Stroke st;
-        st.color = io::palette_color(l);
+        st.color = sketches[l].color;
+        st.width = 1.6;
+        st.opacity = opacity;
+        d.add_polyline(placed(l, sketches[l].contours[c]), st, sketches[l].closed[c]);
+      }
+    for (std::size_t l = 0; l < sketches.size(); ++l)
+      if (!sketches[l].body.empty()) {
+        io::Stroke st;
+        st.color = sketches[l].color;
         st.width = 2.4;
         st.opacity = opacity;
-        d.add_polyline(anchors, st);
+        d.add_polyline(placed(l, sketches[l].body), st);
       }
-    }
-    for (std::size_t p = 0; p < m.pairs.size(); ++p) {
-      const Pair<double>& pr = m.pairs[p];
-      if (is_contact(pr.kind)) {
-        d.add_point(lp[pr.link_a].act(kin.pairs[p].contact[0].p), "#d62728", 3.5, io::Marker::Dot);
-      } else if (pr.link_a != m.ground && pr.link_b != m.ground) {
-        d.add_point(lp[pr.link_a].act(pr.frame_a.translation()), "#333333", 3.5, io::Marker::Circle);
-      }
-    }
+    for (const Eigen::Vector2d& p : contact_points(m, kin, lp)) d.add_point(p, "#d62728", 3.5, io::Marker::Dot);
+    for (std::size_t l = 0; l < sketches.size(); ++l)
+      for (const Eigen::Vector2d& p : placed(l, sketches[l].joints)) d.add_point(p, "#333333", 3.5, io::Marker::Circle);
     labels.push_back({m.variables[input].name + " = " + [&] {
                         char buf[32];
                         std::snprintf(buf, sizeof buf, "%.6g", pose.input * in_scale);
@@ -436,12 +482,11 @@ std::string draw_svg(const OutputContext& ctx) {
                       }() + unit,
                       opacity});
   }
-  // Ground pivots.
-  for (const auto& pr : m.pairs) {
-    if (is_contact(pr.kind) || (pr.link_a != m.ground && pr.link_b != m.ground)) continue;
-    const Eigen::Vector2d at = pr.link_a == m.ground ? pr.frame_a.translation() : pr.frame_b.translation();
-    d.add_point(at, "#000000", 5, io::Marker::Square);
-    d.add_text(at, pr.name, 12, "#000000", 6, 14);
+  // Ground pivots (the ground's frame is the world frame).
+  const LinkSketch& ground = sketches[static_cast<std::size_t>(m.ground)];
+  for (std::size_t k = 0; k < ground.pivots.size(); ++k) {
+    d.add_point(ground.pivots[k], "#000000", 5, io::Marker::Square);
+    d.add_text(ground.pivots[k], ground.pivot_names[k], 12, "#000000", 6, 14);
   }
   // Legend: one line per pose above the content, darker for later poses.
   const Eigen::Vector4d box = d.content_box();

@@ -1,11 +1,14 @@
 // Output of the command-line tool: the CSV table, the chart of the pair variables and the drawing of the
-// mechanism, each built in memory as text (the caller writes them atomically once everything succeeded).
+// mechanism (the animation: animation.hpp), each built in memory as text from one solved sweep (the caller
+// writes them atomically once everything succeeded).
 #pragma once
 
 #include "rollkin/analysis.hpp"
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
+
+#include <Eigen/Core>
 
 #include <optional>
 #include <string>
@@ -50,6 +53,35 @@ std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCent
 
 /// SVG drawing of the mechanism at up to five poses spread over the solved ones.
 std::string draw_svg(const OutputContext& ctx);
+
+/// The file name of a path, without its directories (titles of the outputs).
+std::string base_name(const std::string& file);
+
+/// The unit of the input column: degrees for an angle, the scene's length unit for a length, "" otherwise.
+std::string input_column_unit(const OutputContext& ctx);
+
+/// The value of the input column of row r (output units: degrees for an angle), as csv_text writes it.
+double input_column(const OutputContext& ctx, std::size_t r);
+
+/// A link as drawn, in its own frame: --draw places it at each drawn pose, --animate draws it once and moves
+/// it with one transform per frame.
+struct LinkSketch {
+  std::string color;                                   // black for the ground, else the palette's colour
+  std::vector<std::vector<Eigen::Vector2d>> contours;  // the link's contours, 200 samples each
+  std::vector<bool> closed;                            // per contour
+  std::vector<Eigen::Vector2d> body;     // joints and contour origins, joined by a line (moving links, >= 2)
+  std::vector<Eigen::Vector2d> joints;   // joints to another moving link whose link_a this is (circles)
+  std::vector<Eigen::Vector2d> pivots;   // ground: the joints to moving links (squares, labelled)
+  std::vector<std::string> pivot_names;  // ground: the names of those pairs
+};
+std::vector<LinkSketch> link_sketches(const Mechanism<double>& m);
+
+/// The contact pairs (cam and rolling) in pair order: the order of the analysis columns and contact_points().
+std::vector<int> contact_pairs(const Mechanism<double>& m);
+
+/// The world contact point of every contact pair (on its link_a's contour) at poses lp with kin evaluated.
+std::vector<Eigen::Vector2d> contact_points(const Mechanism<double>& m, const KinematicsData<double>& kin,
+                                            const std::vector<SE2<double>>& lp);
 
 /// Rank of the full (scaled) constraint Jacobian at the pose sd was last evaluated at.
 struct AssemblyRank {

@@ -348,6 +348,25 @@ check "no temporaries left after the failed runs" \
   $([ "$(ls -A | sort | tr '\n' ' ')" = "err.txt keep.csv keep.csv.orig keep.svg keep.svg.orig out.txt " ]; echo $?)
 cd .. || exit 1
 
+# ---- --animate: one self-contained HTML page, one of the all-or-nothing outputs ------------------------------
+mkdir -p anim && cd anim || exit 1
+run solve "$EX/paper_fourbar.json" --from 0 --to 10 --step 5 --animate anim.html
+check "--animate writes an HTML page with the inline SVG, a play button and a slider over the 3 poses" \
+  $([ "$rc" -eq 0 ] && grep -q "^<!DOCTYPE html>" anim.html && grep -q "<svg " anim.html && grep -q '<button id="play"' anim.html &&
+    grep -q '<input id="pose" type="range" min="0" max="2"' anim.html; echo $?)
+check "--animate page: well-formed XML, nothing external (no URL, src=, href=)" \
+  $(python3 -c "import sys, xml.etree.ElementTree as E; E.fromstring(open(sys.argv[1]).read().split(chr(10), 1)[1])" anim.html 2>/dev/null &&
+    ! grep -Eqi "https?:|src=|href=" anim.html; echo $?)
+run solve "$EX/paper_fourbar.json" --csv a.csv --draw a.svg --animate no_such_dir/a.html
+check "--animate in a missing directory: exit 2, names it, the other outputs not written" \
+  $([ "$rc" -eq 2 ] && grep -q "no_such_dir" err.txt && [ ! -e a.csv ] && [ ! -e a.svg ]; echo $?)
+run solve "$EX/paper_fourbar.json" --animate --csv x.csv
+check "--animate followed by an option: exit 2, no file named --csv" \
+  $([ "$rc" -eq 2 ] && grep -q -- '--animate: expects a file name, got the option "--csv"' err.txt && [ ! -e ./--csv ]; echo $?)
+run solve --help
+check "solve --help lists --animate FILE" $(grep -Eq "^ +--animate FILE +[a-z]" out.txt; echo $?)
+cd .. || exit 1
+
 # ---- point files: closed contour with its first point repeated; messages that say what to do (defect 9, 7) ---
 { cat shapes/disk.txt; head -n 1 shapes/disk.txt; } > shapes/disk_repeat.txt
 sed 's|shapes/disk.txt|shapes/disk_repeat.txt|' sampled.json > sampled_repeat.json

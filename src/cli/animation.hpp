@@ -1,0 +1,27 @@
+// `rollkin solve --animate FILE.html`: the solved sweep as one self-contained HTML page (no external file,
+// script or style) that animates the mechanism in an inline SVG.
+//
+// Each link is drawn once in its own frame (its contours as SVG paths, its body and joints: link_sketches(),
+// shared with --draw) inside a <g> whose `transform` is the only thing a frame changes, taken from a table of
+// the per-pose link poses (x, y, angle in degrees, 7 significant digits: the CSV's <link>.x, <link>.y,
+// <link>.angle columns rounded) written into the page as JSON. The contact points move along the same way
+// (one transform each per frame); their paths over the sweep and the centrodes of every moving link relative
+// to the ground (fixed one in the ground's frame, moving one in the link's; the part within the picture and as
+// much around it, none for a centre that stays within a pixel) are drawn once.
+// Controls: a play/pause button, a slider over the poses (in CSV row order), the input value (the CSV's input
+// column) and the pose's status. A pose that was not solved shows its status and hides the moving links
+// (nothing is interpolated); a singular pose shows its values and says they follow the branch.
+// The page is also well-formed XML: names are escaped (io::xml_escape), the script is in a CDATA section and
+// its data holds only numbers and fixed status texts.
+#pragma once
+
+#include "output.hpp"
+
+#include <string>
+
+namespace rollkin::cli {
+
+/// The animation page of the solved sweep in ctx.
+std::string animation_html(const OutputContext& ctx);
+
+}  // namespace rollkin::cli
