@@ -3,13 +3,20 @@
 #   1. install the Debian 12 packages the build needs, only those missing (apt-get as root, else sudo);
 #   2. configure with CMake into build/ (Release);
 #   3. build everything (library, command-line tool build/rollkin, tests) with -j2.
-# Run from anywhere:  bash scripts/setup.sh
+# Run from anywhere:  bash scripts/setup.sh        everything, with the packages the tests use
+#                     bash scripts/setup.sh cli    only the command-line tool build/rollkin and what it needs
+#                                                  (README command 1: the quickest first run)
 # Environment: ROLLKIN_BUILD_DIR (default build), ROLLKIN_JOBS (default 2), ROLLKIN_BUILD_TYPE (default
 # Release), ROLLKIN_SKIP_APT=1 to never call apt-get (e.g. on a non-Debian system with the libraries present).
 # ROLLKIN_SANITIZE=1 configures the AddressSanitizer/UBSan build (CMake option ROLLKIN_SANITIZE; .ci/run uses it
 # with ROLLKIN_BUILD_DIR=build-asan).
 set -euo pipefail
 
+what=${1:-all}
+if [[ "$what" != all && "$what" != cli ]]; then
+  echo "[setup] error: unknown argument \"$what\"; expected nothing (build everything) or \"cli\" (only build/rollkin)" >&2
+  exit 2
+fi
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 build_dir=${ROLLKIN_BUILD_DIR:-build}
@@ -21,16 +28,18 @@ log() { echo "[setup] $*" >&2; }
 # ---- 1. packages ---------------------------------------------------------------------------------------
 # Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
 # and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json; libdxflib (DXF) and pugixml (SVG/XML)
-# readers; CLI11 (command-line parsing of build/rollkin and the benchmark); ezdxf and svgelements, independent
-# producers and readers of the CAD test files; chromium, its driver and selenium for the browser test of the
-# --animate page (tests/browser/test_animation.py).
+# readers; CLI11 (command-line parsing of build/rollkin and the benchmark). For the tests only: ezdxf and
+# svgelements, independent producers and readers of the CAD test files; chromium, its driver and selenium for
+# the browser test of the --animate page (tests/browser/test_animation.py).
 packages=(
   g++ cmake make
   libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
   libdxflib-dev libpugixml-dev libcli11-dev
-  python3 python3-ezdxf python3-svgelements
-  chromium chromium-driver python3-selenium
+  python3
 )
+if [[ "$what" == all ]]; then
+  packages+=(python3-ezdxf python3-svgelements chromium chromium-driver python3-selenium)
+fi
 
 installed() { dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed'; }
 
@@ -73,8 +82,13 @@ if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCH
 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize" "${launcher[@]}"
 
 # ---- 3. build ------------------------------------------------------------------------------------------
-log "building with $jobs jobs"
-cmake --build "$build_dir" --parallel "$jobs"
+if [[ "$what" == cli ]]; then
+  log "building the command-line tool only (rollkin_cli) with $jobs jobs"
+  cmake --build "$build_dir" --parallel "$jobs" --target rollkin_cli
+else
+  log "building with $jobs jobs"
+  cmake --build "$build_dir" --parallel "$jobs"
+fi
 
 # Output directory of the README's example command (the writers do not create directories).
 mkdir -p "$root/out"

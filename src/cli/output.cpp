@@ -146,11 +146,26 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
     curvatures.push_back(m.pairs[k].name + ".kappa1");
     curvatures.push_back(m.pairs[k].name + ".kappa2");
   }
-  for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (static_cast<int>(l) != m.ground) {
+  // Links whose turning accelerates somewhere in the sweep (not a translating follower, nor a crank driven at
+  // the input's constant rate), and the unknowns of prismatic pairs: a follower's stroke, whose acceleration
+  // and jerk a cam designer reads.
+  for (std::size_t l = 0; l < m.links.size(); ++l) {
+    const bool turns = std::any_of(ctx.analysis->begin(), ctx.analysis->end(), [&](const auto& a) {
+      return a && a->angular_acceleration[l] != 0.0;
+    });
+    if (static_cast<int>(l) != m.ground && turns) {
       links.push_back(m.links[l].name);
       moving.push_back(static_cast<int>(l));
     }
+  }
+  std::vector<std::string> strokes;
+  std::vector<int> stroke_variable;
+  for (int i : m.unknowns)
+    for (const Pair<double>& p : m.pairs)
+      if (p.kind == PairKind::Prismatic && p.first_variable == i) {
+        strokes.push_back(m.variables[i].name);
+        stroke_variable.push_back(i);
+      }
   std::vector<ChartSpec> specs;
   if (!pairs.empty())
     specs.push_back({"pressure angle at the contact pairs", std::string("pressure angle [") + io::unit_label(kOutputAngle) + "]",
@@ -179,6 +194,14 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
                      [=](const PoseAnalysis<double>& a, std::size_t k) {
                        return a.angular_jerk[moving[k]] * degrees / (in_scale * in_scale * in_scale);
                      }});
+  if (!strokes.empty()) {
+    specs.push_back({"acceleration of the sliding pairs", "acceleration [" + len + " / " + per_input + "^2]", strokes,
+                     [=](const PoseAnalysis<double>& a, std::size_t k) { return a.qddot(stroke_variable[k]) / (in_scale * in_scale); }});
+    specs.push_back({"jerk of the sliding pairs", "jerk [" + len + " / " + per_input + "^3]", strokes,
+                     [=](const PoseAnalysis<double>& a, std::size_t k) {
+                       return a.qdddot(stroke_variable[k]) / (in_scale * in_scale * in_scale);
+                     }});
+  }
   std::vector<io::SvgChart> charts;
   for (const ChartSpec& s : specs) charts.push_back(analysis_chart(ctx, x, s));
   return charts;

@@ -156,13 +156,17 @@ check "--analysis on the DXF cam: kappa1 = 1 / (s + s'') by central differences 
 run solve "$EX/dxf_cam.json" --step 5 --csv cam_plot.csv --plot cam_plot.svg --analysis
 # The charts' polylines in pixels cannot be compared to the CSV directly; the series names and chart titles
 # (one chart per quantity, sliding only at cam pairs) and a well-formed document are what the plot adds.
-check "--analysis --plot: well-formed SVG with a chart per quantity (pressure angle, sliding, slide-to-roll, curvature, acceleration)" \
+check "--analysis --plot: well-formed SVG with a chart per quantity (pressure angle, sliding, slide-to-roll, curvature, stroke acceleration and jerk)" \
   $([ "$rc" -eq 0 ] && /usr/bin/python3 -c 'import sys, xml.dom.minidom as d; d.parse(sys.argv[1])' cam_plot.svg &&
     for t in "pressure angle at the contact pairs" "sliding velocity at the cam pairs" "slide-to-roll ratio at the cam pairs" \
-             "curvature of the contours at the contact" "angular acceleration of the links"; do grep -q "$t" cam_plot.svg || exit 1; done; echo $?)
+             "curvature of the contours at the contact" "acceleration of the sliding pairs" "jerk of the sliding pairs"; do
+      grep -q "$t" cam_plot.svg || exit 1; done; echo $?)
+check "--analysis --plot on the cam: no angular acceleration chart (cam at constant rate, follower translating)" \
+  $(! grep -q "angular acceleration of the links" cam_plot.svg; echo $?)
 run solve "$EX/paper_fourbar.json" --plot paper_plot.svg --analysis
-check "--analysis --plot on rolling pairs only: no sliding chart (zero by construction)" \
-  $([ "$rc" -eq 0 ] && grep -q "pressure angle at the contact pairs" paper_plot.svg && ! grep -q "sliding velocity" paper_plot.svg; echo $?)
+check "--analysis --plot on rolling pairs only: no sliding chart (zero by construction), angular acceleration and jerk charts" \
+  $([ "$rc" -eq 0 ] && grep -q "pressure angle at the contact pairs" paper_plot.svg && ! grep -q "sliding velocity" paper_plot.svg &&
+    grep -q "angular acceleration of the links" paper_plot.svg && grep -q "angular jerk of the links" paper_plot.svg; echo $?)
 
 # ---- beyond the limits: exit 1, limits on stderr, rows still written ---------------------------------
 run solve "$EX/paper_fourbar.json" --from -70 --to 120 --csv wide.csv --plot wide.svg --draw pose.svg
