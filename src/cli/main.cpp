@@ -351,7 +351,7 @@ Command solve_command(CLI::App& rollkin) {
   add_sweep_options(*app, o->sweep);
   add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
   add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
-  add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at about five poses across the solved range");
+  add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at four poses across the solved range, one panel each");
   add_output(*app, "--animate", o->animate,
              "self-contained HTML page animating the mechanism over the solved poses (play/pause, slider)");
   app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");

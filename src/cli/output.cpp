@@ -447,81 +447,114 @@ std::vector<Eigen::Vector2d> contact_points(const Mechanism<double>& m, const Ki
   return out;
 }
 
+namespace {
+
+/// Documents side by side in rows of `columns` (nested <svg> elements), each `w` x `h` pixels.
+std::string tile_documents(const std::vector<std::string>& svgs, int w, int h, int columns) {
+  const int n = static_cast<int>(svgs.size()), rows = (n + columns - 1) / columns, cols = std::min(n, columns);
+  const int width = w * std::max(cols, 1), height = h * std::max(rows, 1);
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+                    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(width) +
+                    "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + " " +
+                    std::to_string(height) + "\">\n";
+  for (int k = 0; k < n; ++k) {
+    std::string body = strip_header(svgs[static_cast<std::size_t>(k)]);
+    body.insert(4, " x=\"" + std::to_string(w * (k % columns)) + "\" y=\"" + std::to_string(h * (k / columns)) + "\"");
+    out += body;
+  }
+  return out + "</svg>\n";
+}
+
+/// The solved poses the drawing shows: up to `count`, spread evenly over the solved ones in input order.
+std::vector<std::size_t> poses_to_draw(const SweepResult<double>& result, std::size_t count) {
+  std::vector<std::size_t> solved;
+  for (std::size_t i = 0; i < result.poses.size(); ++i)
+    if (result.poses[i].report.has_pose()) solved.push_back(i);
+  std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return result.poses[a].input < result.poses[b].input; });
+  std::vector<std::size_t> pick;
+  count = std::min(count, solved.size());
+  for (std::size_t k = 0; k < count; ++k)
+    pick.push_back(solved[count == 1 ? 0 : (k * (solved.size() - 1) + (count - 1) / 2) / (count - 1)]);
+  return pick;
+}
+
+}  // namespace
+
 std::string draw_svg(const OutputContext& ctx) {
   const io::Scene& scene = ctx.scene;
   const Mechanism<double>& m = scene.mechanism;
-  const auto& poses = ctx.result.poses;
-  std::vector<std::size_t> solved;
-  for (std::size_t i = 0; i < poses.size(); ++i)
-    if (poses[i].report.has_pose()) solved.push_back(i);
-  // Up to five poses, spread over the solved ones in input order.
-  std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return poses[a].input < poses[b].input; });
-  std::vector<std::size_t> pick;
-  const std::size_t count = std::min<std::size_t>(5, solved.size());
-  for (std::size_t k = 0; k < count; ++k)
-    pick.push_back(solved[count == 1 ? 0 : (k * (solved.size() - 1) + (count - 1) / 2) / (count - 1)]);
-
+  // Small multiples: one panel per pose, all at the same scale, so that no two poses overlap and the labels
+  // (ground pivots, the input value in each panel's title) stand alone.
+  const std::vector<std::size_t> pick = poses_to_draw(ctx.result, 4);
   const std::vector<LinkSketch> sketches = link_sketches(m);
-  io::SvgDrawing d(900, 680, 30);
-  d.set_title(base_name(scene.file) + ": mechanism at " + std::to_string(count) + " pose(s), later poses darker");
   KinematicsData<double> kin(m);
-  const int input = ctx.sweep.variable;
-  const double in_scale = out_scale(m, input);
-  const std::string unit = input >= 0 && m.variables[input].kind == ParamKind::Angle ? " deg" : "";
-  std::vector<std::pair<std::string, double>> labels;
+  struct Placed {
+    std::vector<std::vector<Eigen::Vector2d>> lines;  // contours and bodies, world
+    std::vector<bool> closed, body;
+    std::vector<std::string> colors;
+    std::vector<Eigen::Vector2d> contacts, joints;
+  };
+  std::vector<Placed> placed(pick.size());
+  Eigen::Vector4d box(1e300, 1e300, -1e300, -1e300);
+  auto extend = [&](const Eigen::Vector2d& p) {
+    box << std::min(box(0), p.x()), std::min(box(1), p.y()), std::max(box(2), p.x()), std::max(box(3), p.y());
+  };
   for (std::size_t k = 0; k < pick.size(); ++k) {
-    const auto& pose = poses[pick[k]];
-    const double opacity = 0.2 + 0.8 * static_cast<double>(k + 1) / static_cast<double>(pick.size());
-    evaluate_pairs<double>(m, pose.q, nullptr, 2, kin);
+    evaluate_pairs<double>(m, ctx.result.poses[pick[k]].q, nullptr, 2, kin);
     const std::vector<SE2<double>> lp = link_poses(m, kin);
-    auto placed = [&](std::size_t l, const std::vector<Eigen::Vector2d>& pts) {
-      std::vector<Eigen::Vector2d> world;
-      for (const auto& p : pts) world.push_back(lp[l].act(p));
-      return world;
-    };
-    for (std::size_t l = 0; l < sketches.size(); ++l)
-      for (std::size_t c = 0; c < sketches[l].contours.size(); ++c) {
-        io::Stroke st;
-        st.color = sketches[l].color;
-        st.width = 1.6;
-        st.opacity = opacity;
-        d.add_polyline(placed(l, sketches[l].contours[c]), st, sketches[l].closed[c]);
-      }
-    for (std::size_t l = 0; l < sketches.size(); ++l)
-      if (!sketches[l].body.empty()) {
-        io::Stroke st;
-        st.color = sketches[l].color;
-        st.width = 2.4;
-        st.opacity = opacity;
-        d.add_polyline(placed(l, sketches[l].body), st);
-      }
-    for (const Eigen::Vector2d& p : contact_points(m, kin, lp)) d.add_point(p, "#d62728", 3.5, io::Marker::Dot);
-    for (std::size_t l = 0; l < sketches.size(); ++l)
-      for (const Eigen::Vector2d& p : placed(l, sketches[l].joints)) d.add_point(p, "#333333", 3.5, io::Marker::Circle);
-    labels.push_back({m.variables[input].name + " = " + [&] {
-                        char buf[32];
-                        std::snprintf(buf, sizeof buf, "%.6g", pose.input * in_scale);
-                        return std::string(buf);
-                      }() + unit,
-                      opacity});
+    Placed& pl = placed[k];
+    for (std::size_t l = 0; l < sketches.size(); ++l) {
+      auto add = [&](const std::vector<Eigen::Vector2d>& pts, bool closed, bool body) {
+        std::vector<Eigen::Vector2d> world;
+        for (const auto& p : pts) {
+          world.push_back(lp[l].act(p));
+          extend(world.back());
+        }
+        pl.lines.push_back(std::move(world));
+        pl.closed.push_back(closed);
+        pl.body.push_back(body);
+        pl.colors.push_back(sketches[l].color);
+      };
+      for (std::size_t c = 0; c < sketches[l].contours.size(); ++c) add(sketches[l].contours[c], sketches[l].closed[c], false);
+      if (!sketches[l].body.empty()) add(sketches[l].body, false, true);
+      for (const auto& p : sketches[l].joints) pl.joints.push_back(lp[l].act(p));
+    }
+    pl.contacts = contact_points(m, kin, lp);
   }
-  // Ground pivots (the ground's frame is the world frame).
-  const LinkSketch& ground = sketches[static_cast<std::size_t>(m.ground)];
-  for (std::size_t k = 0; k < ground.pivots.size(); ++k) {
-    d.add_point(ground.pivots[k], "#000000", 5, io::Marker::Square);
-    d.add_text(ground.pivots[k], ground.pivot_names[k], 12, "#000000", 6, 14);
+  const int w = 450, h = 360;
+  const int input = ctx.sweep.variable;
+  std::vector<std::string> panels;
+  for (std::size_t k = 0; k < pick.size(); ++k) {
+    const SweepPose<double>& pose = ctx.result.poses[pick[k]];
+    io::SvgDrawing d(w, h, 24);
+    d.set_title(base_name(scene.file) + ": " + m.variables[input].name + " = " + io::format_double(input_column(ctx, pick[k])) +
+                (input_column_unit(ctx).empty() ? "" : " " + input_column_unit(ctx)) +
+                (pose.report.ok() ? "" : " (" + std::string(to_string(pose.report.status)) + ")"));
+    d.set_world_box(box(0), box(1), box(2), box(3));
+    const Placed& pl = placed[k];
+    for (std::size_t i = 0; i < pl.lines.size(); ++i) {
+      io::Stroke st;
+      st.color = pl.colors[i];
+      st.width = pl.body[i] ? 2.4 : 1.6;
+      d.add_polyline(pl.lines[i], st, pl.closed[i]);
+    }
+    for (const Eigen::Vector2d& p : pl.contacts) d.add_point(p, "#d62728", 3.5, io::Marker::Dot);
+    for (const Eigen::Vector2d& p : pl.joints) d.add_point(p, "#333333", 3.5, io::Marker::Circle);
+    // Ground pivots (the ground's frame is the world frame).
+    const LinkSketch& ground = sketches[static_cast<std::size_t>(m.ground)];
+    for (std::size_t j = 0; j < ground.pivots.size(); ++j) {
+      d.add_point(ground.pivots[j], "#000000", 5, io::Marker::Square);
+      d.add_text(ground.pivots[j], ground.pivot_names[j], 12, "#000000", 6, 14);
+    }
+    panels.push_back(d.to_svg());
   }
-  // Legend: one line per pose above the content, darker for later poses.
-  const Eigen::Vector4d box = d.content_box();
-  const double line = 0.045 * std::max(box(2) - box(0), box(3) - box(1));
-  for (std::size_t k = 0; k < labels.size(); ++k) {
-    const int g = static_cast<int>(200 * (1 - labels[k].second));
-    char color[16];
-    std::snprintf(color, sizeof color, "#%02x%02x%02x", g, g, g);
-    d.add_text(Eigen::Vector2d(box(0), box(3) + line * static_cast<double>(labels.size() - k)), labels[k].first, 12, color, 0, 0);
+  if (panels.empty()) {
+    io::SvgDrawing d(w, h, 24);
+    d.set_title(base_name(scene.file) + ": no solved pose to draw");
+    d.add_text(Eigen::Vector2d(0, 0), "no solved pose to draw", 14, "#d62728", 0, 0);
+    return d.to_svg();
   }
-  if (pick.empty()) d.add_text(Eigen::Vector2d(0, 0), "no solved pose to draw", 14, "#d62728", 0, 0);
-  return d.to_svg();
+  return tile_documents(panels, w, h, 2);
 }
 
 AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd) {

@@ -51,7 +51,8 @@ std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCen
 /// run is the whole sweep and ends where it starts), a run of two or three points the polyline through them.
 std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b);
 
-/// SVG drawing of the mechanism at up to five poses spread over the solved ones.
+/// SVG drawing of the mechanism at up to four poses spread over the solved ones, one panel per pose at a
+/// common scale (small multiples: no two poses overlap).
 std::string draw_svg(const OutputContext& ctx);
 
 /// The file name of a path, without its directories (titles of the outputs).
