@@ -343,3 +343,20 @@ BOOST_AUTO_TEST_CASE(rejected_inputs_leave_no_file_open) {
     }
   BOOST_TEST(open_descriptors() == before);
 }
+
+// fuzz_dxf (session 6): libdxflib reads entities in any section and sizes its arrays from their counts; a
+// SPLINE in a misspelt section with 1056964608 fit points (group 74) overflowed new double[3 n]. Counts that
+// size arrays are bounded wherever the entity is.
+BOOST_AUTO_TEST_CASE(array_counts_are_bounded_in_every_section) {
+  for (const char* section : {"BLOCKS", "ENTITM-rES"}) {
+    const std::string text = std::string("0\nSECTION\n2\n") + section + "\n0\nSPLINE\n71\n3\n74\n1056964608\n0\nENDSEC\n0\nEOF\n";
+    const std::string message = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{}, "fit.dxf"); });
+    BOOST_TEST(contains(message, "fit.dxf"));
+    BOOST_TEST(contains(message, "line 10"));  // the value line of group 74
+    BOOST_TEST(contains(message, "SPLINE: group 74 count \"1056964608\" is impossible"));
+  }
+  // A LEADER's vertex count (group 76) in ENTITIES, named by its handle.
+  const std::string leader = "0\nSECTION\n2\nENTITIES\n0\nLEADER\n5\n4C\n76\n1500000000\n0\nENDSEC\n0\nEOF\n";
+  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(leader, DxfSelection{}, "l.dxf"); }),
+                      "LEADER 4C: group 76 count 1500000000 is impossible"));
+}

@@ -136,7 +136,12 @@ class Collector : public DL_CreationAdapter {
   void processCodeValuePair(unsigned int code, const std::string& value) override {
     ++pair_;
     const std::size_t line = 2 * pair_ - 1;
-    if (code == 0) return entity_start(trim(value), line);
+    if (code == 0) {
+      entity_type_ = trim(value);
+      return entity_start(entity_type_, line);
+    }
+    // (In ENTITIES count_value checks them too, naming the entity by its handle.)
+    if (section_ != "ENTITIES" && sizes_an_array(entity_type_, code)) bounded_count(code, value, line);
     if (code == 2 && expect_section_name_) {
       section_ = trim(value);
       expect_section_name_ = false;
@@ -174,6 +179,7 @@ class Collector : public DL_CreationAdapter {
       case 73: e.g73 = count_value(e, code, value, line); break;
       case 74: e.g74 = count_value(e, code, value, line); break;
       case 90: e.g90 = count_value(e, code, value, line); break;
+      case 76: if (e.type == "LEADER") count_value(e, code, value, line); break;  // libdxflib: new double[3 n]
       default: break;
     }
   }
@@ -226,6 +232,23 @@ class Collector : public DL_CreationAdapter {
     const double* dir = getExtrusion()->getDirection();
     e.extrusion = {dir[0], dir[1], dir[2]};
     return &e;
+  }
+
+  /// Groups from which libdxflib sizes an array (new double[k * count]) for the entity it is reading, in any
+  /// section: ENTITIES, BLOCKS or one it does not know (fuzz_dxf: a SPLINE in a misspelt section with
+  /// 1056964608 fit points overflowed the size).
+  static bool sizes_an_array(const std::string& type, unsigned code) {
+    return (type == "LWPOLYLINE" && code == 90) || (type == "SPLINE" && (code == 72 || code == 73 || code == 74)) ||
+           (type == "LEADER" && code == 76);
+  }
+
+  /// Such a count must be an integer between 0 and the number of groups in the file.
+  void bounded_count(unsigned code, const std::string& value, std::size_t line) const {
+    long n = 0;
+    if (!parse_long(value, n) || n < 0 || static_cast<std::size_t>(n) > pairs_)
+      throw InputError(file_, "line " + std::to_string(line + 1),
+                       entity_type_ + ": group " + std::to_string(code) + " count \"" + trim(value).substr(0, 40) +
+                           "\" is impossible (not an integer from 0 to the file's " + std::to_string(pairs_) + " groups)");
   }
 
   long count_value(const RawEntity& e, unsigned code, const std::string& value, std::size_t line) {
@@ -287,7 +310,7 @@ class Collector : public DL_CreationAdapter {
 
   std::string file_;
   std::size_t pairs_, pair_ = 0;
-  std::string section_, header_variable_;
+  std::string section_, header_variable_, entity_type_;  // entity_type_: of the last group 0, any section
   bool expect_section_name_ = false, in_sequence_ = false;
   long current_ = -1, target_ = -1, dummy_ = 0;
 };
