@@ -89,6 +89,20 @@ std::vector<PoseAnalysis<double>> analyse_sweep(const Mechanism<double>& m, cons
   return out;
 }
 
+/// The paper example solved and analysed from -40 to 90 degrees every 10, each value with its
+/// central-difference neighbours at +-h (with_neighbours).
+struct PaperWithNeighbours {
+  Fixture<double> f;
+  std::vector<double> inputs;
+  SweepResult<double> res;
+  std::vector<PoseAnalysis<double>> an;
+  explicit PaperWithNeighbours(double h)
+      : f(paper_fourbar<double>()), inputs(with_neighbours(-40, 90, 10, h)), res(assemble_and_sweep(f, inputs)) {
+    BOOST_TEST_REQUIRE(res.all_solved());
+    an = analyse_sweep(f.mech, res);
+  }
+};
+
 double ellipse_curvature(double A, double B, double t) {
   const double s = std::sin(t), c = std::cos(t);
   return A * B / std::pow(A * A * s * s + B * B * c * c, 1.5);
@@ -284,12 +298,9 @@ BOOST_AUTO_TEST_CASE(curvatures_of_ellipses_and_of_a_ring) {
 }
 
 BOOST_AUTO_TEST_CASE(angular_accelerations_match_differences_of_angular_velocities) {
-  const auto f = paper_fourbar<double>();
   const double h = 1e-4;
-  const std::vector<double> inputs = with_neighbours(-40, 90, 10, h);
-  const auto res = assemble_and_sweep(f, inputs);
-  BOOST_TEST_REQUIRE(res.all_solved());
-  const auto an = analyse_sweep(f.mech, res);
+  const PaperWithNeighbours p(h);
+  const auto& [f, inputs, res, an] = p;
   double worst = 0;
   for (std::size_t k = 1; k < inputs.size(); k += 3)
     for (std::size_t l = 0; l < f.mech.links.size(); ++l) {
@@ -353,12 +364,9 @@ BOOST_AUTO_TEST_CASE(follower_jerk_matches_the_closed_forms_of_the_eccentric_cam
 }
 
 BOOST_AUTO_TEST_CASE(jerks_match_differences_of_the_analytic_accelerations) {
-  const auto f = paper_fourbar<double>();
   const double h = 1e-4;
-  const std::vector<double> inputs = with_neighbours(-40, 90, 10, h);
-  const auto res = assemble_and_sweep(f, inputs);
-  BOOST_TEST_REQUIRE(res.all_solved());
-  const auto an = analyse_sweep(f.mech, res);
+  const PaperWithNeighbours p(h);
+  const auto& [f, inputs, res, an] = p;
   double worst = 0, worst_q = 0;
   for (std::size_t k = 1; k < inputs.size(); k += 3) {
     for (std::size_t l = 0; l < f.mech.links.size(); ++l) {
