@@ -15,6 +15,7 @@
 #include "mechanisms.hpp"
 #include "rollkin/design_check.hpp"
 #include "rollkin/io/scene.hpp"
+#include "rollkin/scalar_mpfr.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -221,4 +222,26 @@ BOOST_AUTO_TEST_CASE(exact_relative_curvature_sign) {
   const Vec2<double> straight1(1, 0), straight2(0, 0);
   BOOST_TEST(relative_curvature_sign(straight1, straight2, straight1, straight2, 1e-9) == 0);
   BOOST_TEST(relative_curvature_sign(straight1, straight2, ring(1e6)[0], ring(1e6)[1], 1e-9) == -1);
+}
+
+BOOST_AUTO_TEST_CASE(mpfr_finds_the_parabola_vertex_between_poses_to_full_precision) {
+  // The paper's crank at -7, 3 and 13 deg: the vertex (x = 0, radius 1/(2a) = 1) is passed between the first
+  // two poses; the refinement (zero of the curvature's slope) finds it to the precision of the scalar.
+  using M = mpfr50;
+  const auto f = paper_fourbar<M>();
+  SolveData<M> sd(f.mech);
+  VectorX<M> q;
+  const auto assembly = assemble_fixture(f, q, sd);
+  BOOST_TEST_REQUIRE(assembly.ok());
+  const M deg = pi<M>() / M(180);
+  const auto res = sweep(f.mech, sd, q, assembly, 0, std::vector<M>{M(-7) * deg, M(3) * deg, M(13) * deg});
+  BOOST_TEST_REQUIRE(res.all_solved());
+  const DesignCheck<M> check = check_design(f.mech, res);
+  const TouchedPoint<M>& vertex = check.pairs.at(0).contours[0].sharpest_convex;
+  BOOST_TEST_REQUIRE(vertex.found);
+  const double x_error = to_double(M(abs(vertex.u))), rho_error = to_double(M(abs(M(1) / vertex.kappa - M(1))));
+  BOOST_TEST(x_error <= 1e-40);
+  BOOST_TEST(rho_error <= 1e-40);
+  BOOST_TEST(!check.impossible());
+  BOOST_TEST_MESSAGE("MPFR50: vertex found at input " << to_double(M(vertex.input / deg)) << " deg, |x| = " << x_error << ", radius - 1/(2a) = " << rho_error);
 }
