@@ -425,6 +425,19 @@ std::string finding_line(const io::Scene& scene, const io::Sweep& sw, const Pair
   return line;
 }
 
+/// A roller against the concave parts it must enter: "roller 'f.roller' (radius 1.5) in 'cam.groove': ...".
+std::string roller_line(const Mechanism<double>& m, const PairDesignCheck<double>& d) {
+  const ContourCurvatureCheck<double>& roller = d.contours[d.roller];
+  const ContourCurvatureCheck<double>& other = d.contours[1 - d.roller];
+  std::string line = "roller '" + contour_name(m, roller.contour) + "' (radius " + fmt(roller.radius, 10) + ") on '" +
+                     contour_name(m, other.contour) + "': ";
+  if (!other.sharpest_concave.found) return line + "no concave part touched";
+  const double rho = -1 / other.sharpest_concave.kappa;
+  if (d.conformity == Conformity::Interpenetrating) return line + "too large for its smallest concave radius " + fmt(rho, 10);
+  return line + "fits its smallest concave radius " + fmt(rho, 10) +
+         (d.conformity == Conformity::Osculating ? " (equal: osculating)" : "");
+}
+
 /// The design check of a solved sweep (rollkin/design_check.hpp) as text.
 DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
@@ -443,6 +456,7 @@ DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const Sw
     for (int side = 0; side < 2; ++side)
       for (const auto& l : curvature_lines(scene, sw, p.first_variable + side, d.contours[side]))
         out.section.push_back("    " + l);
+    if (d.roller >= 0) out.section.push_back("    " + roller_line(m, d));
     out.section.push_back("    smallest relative curvature kappa1 + kappa2 = " + fmt(d.worst_relative, 10) + " at " +
                           input_text(scene, sw, d.worst[0].input) + ": " + to_string(d.conformity));
     if (d.conformity == Conformity::Interpenetrating) out.findings.push_back(finding_line(scene, sw, d));

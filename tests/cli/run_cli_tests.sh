@@ -486,6 +486,9 @@ check "check on the paper example: exit 0, nothing on stderr, no finding" \
 check "check on the paper example: the parabola's smallest radius 1/(2a) = 1 at its vertex, the disks 1 and 4" \
   $(grep -q "link2.parabola: smallest convex radius of curvature 1 at A.x = " out.txt && grep -q "link3.rim: circle of radius 1 (convex)" out.txt \
     && grep -q "link4.rim: circle of radius 4 (convex)" out.txt; echo $?)
+run check "$EX/hypocycloid.json"
+check "check on the planet inside its ring: the roller (radius 1) fits the ring's concave radius 4, exit 0" \
+  $([ "$rc" -eq 0 ] && grep -q "roller 'planet.disk' (radius 1) on 'frame.ring': fits its smallest concave radius 4$" out.txt; echo $?)
 UNDERCUT="$SRC/tests/data/undercut_ellipse.json"
 run check "$UNDERCUT"
 check "check on a roller too large for the groove: exit 1, one located line naming the pair" \
