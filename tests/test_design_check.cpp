@@ -57,6 +57,16 @@ io::Scene groove_with_roller(double r) {
   return io::parse_scene(j.dump(), file);
 }
 
+/// tests/data/undercut_ellipse.json with the roller given as an ellipse of equal semi-axes r: the same disk,
+/// but not a circle to the check, so its generic (two-contour) conformity test decides.
+io::Scene groove_with_round_ellipse(double r) {
+  const std::string file = kSource + "/tests/data/undercut_ellipse.json";
+  nlohmann::json j = nlohmann::json::parse(file_text(file));
+  j["links"][2]["contours"][0] = {{"name", "roller"}, {"type", "ellipse"}, {"semi_axes", {r, r}}};
+  j["pairs"][1]["value"] = 3 - r;
+  return io::parse_scene(j.dump(), file);
+}
+
 /// Radius of curvature of the ellipse (a cos t, b sin t).
 double ellipse_radius(double a, double b, double t) {
   const double s = std::sin(t), c = std::cos(t);
@@ -158,6 +168,23 @@ BOOST_AUTO_TEST_CASE(roller_smaller_than_the_groove_vertex_radius_fits) {
   BOOST_TEST(std::abs(p.worst_relative - (1 / r - 1 / rho)) <= 1e-12);
   BOOST_TEST(!p.cusps[0].found);
   BOOST_TEST(!p.cusps[1].found);
+}
+
+BOOST_AUTO_TEST_CASE(two_non_circular_contours_interpenetrating_are_found_by_the_generic_test) {
+  const double a = 3, b = 2, r = 1.5;
+  const io::Scene scene = groove_with_round_ellipse(r);
+  const SweepResult<double> res = swept(scene, io::sweep_inputs(*scene.sweep));
+  BOOST_REQUIRE(res.all_solved());
+  const DesignCheck<double> check = check_design(scene.mechanism, res);
+  const PairDesignCheck<double>& p = check.pairs.at(0);
+  BOOST_TEST(p.roller == -1);
+  BOOST_TEST(!p.contours[1].circle);
+  BOOST_TEST(check.impossible());
+  BOOST_TEST(to_string(p.conformity) == to_string(Conformity::Interpenetrating));
+  BOOST_TEST(std::abs(std::abs(p.worst[0].point.x()) - a) <= 1e-9 * a);
+  BOOST_TEST(std::abs(p.worst_relative - (1 / r - a / (b * b))) <= 1e-12);
+  BOOST_TEST(std::abs(p.contours[1].min_radius() - r) <= 1e-12 * r);
+  BOOST_TEST(!p.cusps[0].found);
 }
 
 BOOST_AUTO_TEST_CASE(paper_example_radii_are_the_parabola_closed_form_and_the_disk_radii) {

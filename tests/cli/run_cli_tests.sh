@@ -498,6 +498,10 @@ check "check: the undercut is located at the vertex (u = 0, point 3, 0) at phi =
 run check "$UNDERCUT" --from 60 --to 120 --step 1
 check "check over a range past the cusps: exit 1, the dead points and the undercut reported" \
   $([ "$rc" -eq 1 ] && grep -q "dead_point" err.txt && grep -q "undercut: pair 'C'" err.txt; echo $?)
+sed 's/"type": "circle", "radius": 1.5/"type": "ellipse", "semi_axes": [1.5, 1.5]/' "$UNDERCUT" > round_tip.json
+run check round_tip.json
+check "check on two non-circular contours that interpenetrate: exit 1, the pair and both contours named" \
+  $([ "$rc" -eq 1 ] && grep -q "interpenetration: the contours 'cam.groove' and 'follower.roller' of pair 'C' interpenetrate next to their contact at C.u = 0 deg (point 3, 0)" err.txt; echo $?)
 run solve "$UNDERCUT" --verbose
 check "solve --verbose prints the design check section with the undercut (solve's exit status unchanged)" \
   $([ "$rc" -eq 0 ] && grep -q "^design check" out.txt && grep -q "undercut: pair 'C'" out.txt; echo $?)
