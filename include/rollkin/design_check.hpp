@@ -199,6 +199,14 @@ template <class S> S objective(Objective o, const S& k0, const S& k1) {
   return k0 + k1;
 }
 
+/// The root of f in [lo, hi] where f changes sign (TOMS 748 to the scalar's precision).
+template <class S, class F> S bracketed_root(const F& f, const S& lo, const S& hi) {
+  boost::math::tools::eps_tolerance<S> tol(std::numeric_limits<S>::digits - 3);
+  std::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(f, lo, hi, tol, iterations);
+  return (bracket.first + bracket.second) / S(2);
+}
+
 /// The undercut's end on contour c starting from u0 (where 1 + r kappa < 0) in direction dir (+1 or -1): the
 /// first zero of 1 + r kappa, walked in steps of the domain's length / steps and then bracketed (TOMS 748).
 template <class S> std::optional<S> undercut_end(const Contour<S>& c, const S& r, const S& u0, int dir, int steps) {
@@ -210,12 +218,7 @@ template <class S> std::optional<S> undercut_end(const Contour<S>& c, const S& r
     S b = a + h;
     const bool at_end = !d.closed && (b <= d.lo || b >= d.hi);
     if (at_end) b = dir > 0 ? d.hi : d.lo;
-    if (margin(b) >= S(0)) {
-      boost::math::tools::eps_tolerance<S> tol(std::numeric_limits<S>::digits - 3);
-      std::uintmax_t iterations = 200;
-      const auto bracket = boost::math::tools::toms748_solve(margin, dir > 0 ? a : b, dir > 0 ? b : a, tol, iterations);
-      return (bracket.first + bracket.second) / S(2);
-    }
+    if (margin(b) >= S(0)) return bracketed_root(margin, dir > 0 ? a : b, dir > 0 ? b : a);
     if (at_end) return std::nullopt;  // the region reaches the contour's end
     a = b;
   }
@@ -249,6 +252,59 @@ template <class S> Conformity conformity_at(const std::array<const Contour<S>*, 
   return sign > 0 ? Conformity::Conforming : (sign == 0 ? Conformity::Osculating : Conformity::Interpenetrating);
 }
 
+/// The extremes of every objective over the contact paths of a pair with contours c, sampled at t = j / steps.
+template <class S> std::array<Extreme<S>, kObjectives> scan_extremes(const std::array<const Contour<S>*, 2>& c,
+                                                                     const std::vector<ContactPath<S>>& paths, int steps) {
+  std::array<Extreme<S>, kObjectives> best;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const bool moving = paths[i].in1 != paths[i].in0;
+    for (int j = 0; j <= (moving ? steps : 0); ++j) {
+      const S t = S(j) / S(steps);
+      const S k0 = curvature_at(*c[0], paths[i].param(0, t)), k1 = curvature_at(*c[1], paths[i].param(1, t));
+      for (int o = 0; o < kObjectives; ++o) {
+        const S v = objective(static_cast<Objective>(o), k0, k1);
+        if (v < best[static_cast<std::size_t>(o)].value) best[static_cast<std::size_t>(o)] = {v, i, t};
+      }
+    }
+  }
+  return best;
+}
+
+/// Refines the extreme e of objective o on its path within a sample step on either side: the zero of the
+/// objective's slope where the slope changes sign there (to full precision), else Brent's minimisation (half
+/// the digits). The objective is linear in the curvatures, so its slope is the objective of their slopes.
+template <class S> void refine_extreme(const std::array<const Contour<S>*, 2>& c, const std::vector<ContactPath<S>>& paths,
+                                       int steps, Objective o, Extreme<S>& e) {
+  using std::max;
+  using std::min;
+  const ContactPath<S>& path = paths[e.path];
+  if (path.in1 == path.in0) return;
+  const S lo = max(S(0), S(e.t - S(1) / S(steps))), hi = min(S(1), S(e.t + S(1) / S(steps)));
+  const auto f = [&](const S& t) {
+    return objective(o, curvature_at(*c[0], path.param(0, t)), curvature_at(*c[1], path.param(1, t)));
+  };
+  const auto slope = [&](const S& t) {
+    return objective(o, S(curvature_slope(*c[0], path.param(0, t)) * path.rate(0, t)),
+                     S(curvature_slope(*c[1], path.param(1, t)) * path.rate(1, t)));
+  };
+  const S t = slope(lo) < S(0) && slope(hi) > S(0)
+                  ? bracketed_root(slope, lo, hi)
+                  : S(boost::math::tools::brent_find_minima(f, lo, hi, std::numeric_limits<S>::digits / 2).first);
+  const S v = f(t);
+  if (v < e.value) e = {v, e.path, t};
+}
+
+/// The roller of a pair: the side whose contour is a circle convex at the contact (the smaller when both are).
+template <class S> int roller_side(const PairDesignCheck<S>& d) {
+  int roller = -1;
+  for (int side = 0; side < 2; ++side) {
+    const ContourCurvatureCheck<S>& info = d.contours[static_cast<std::size_t>(side)];
+    if (!info.circle || !(d.worst[static_cast<std::size_t>(side)].kappa > S(0))) continue;
+    if (roller < 0 || info.radius < d.contours[static_cast<std::size_t>(roller)].radius) roller = side;
+  }
+  return roller;
+}
+
 /// The check of contact pair k over the sweep (see the top of this file).
 template <class S> PairDesignCheck<S> check_pair(const Mechanism<S>& m, int k, const SweepResult<S>& sweep,
                                                  const DesignCheckOptions& opt) {
@@ -262,82 +318,34 @@ template <class S> PairDesignCheck<S> check_pair(const Mechanism<S>& m, int k, c
   if (paths.empty()) return out;
   out.touched = true;
 
-  auto value = [&](Objective o, const ContactPath<S>& path, const S& t) {
-    return objective(o, curvature_at(*c[0], path.param(0, t)), curvature_at(*c[1], path.param(1, t)));
-  };
-  // Scan: every path at t = j / M.
   const int steps = opt.samples_per_step < 1 ? 1 : opt.samples_per_step;
-  std::array<Extreme<S>, kObjectives> best;
-  for (std::size_t i = 0; i < paths.size(); ++i) {
-    const bool moving = paths[i].in1 != paths[i].in0;
-    for (int j = 0; j <= (moving ? steps : 0); ++j) {
-      const S t = S(j) / S(steps);
-      const S k0 = curvature_at(*c[0], paths[i].param(0, t)), k1 = curvature_at(*c[1], paths[i].param(1, t));
-      for (int o = 0; o < kObjectives; ++o) {
-        const S v = objective(static_cast<Objective>(o), k0, k1);
-        if (v < best[static_cast<std::size_t>(o)].value) best[static_cast<std::size_t>(o)] = {v, i, t};
-      }
-    }
-  }
-  // Refine each extreme on its path within a sample step on either side: the zero of the objective's slope
-  // where the slope changes sign there (to full precision), else Brent's minimisation (half the digits).
-  for (int o = 0; o < kObjectives; ++o) {
-    Extreme<S>& e = best[static_cast<std::size_t>(o)];
-    const ContactPath<S>& path = paths[e.path];
-    if (path.in1 == path.in0) continue;
-    using std::max;
-    using std::min;
-    const Objective ob = static_cast<Objective>(o);
-    const S lo = max(S(0), S(e.t - S(1) / S(steps))), hi = min(S(1), S(e.t + S(1) / S(steps)));
-    const auto f = [&](const S& t) { return value(ob, path, t); };
-    const auto slope = [&](const S& t) {  // the objective is linear in the curvatures
-      return objective(ob, S(curvature_slope(*c[0], path.param(0, t)) * path.rate(0, t)),
-                       S(curvature_slope(*c[1], path.param(1, t)) * path.rate(1, t)));
-    };
-    S t;
-    if (slope(lo) < S(0) && slope(hi) > S(0)) {
-      boost::math::tools::eps_tolerance<S> tol(std::numeric_limits<S>::digits - 3);
-      std::uintmax_t iterations = 200;
-      const auto bracket = boost::math::tools::toms748_solve(slope, lo, hi, tol, iterations);
-      t = (bracket.first + bracket.second) / S(2);
-    } else {
-      t = boost::math::tools::brent_find_minima(f, lo, hi, std::numeric_limits<S>::digits / 2).first;
-    }
-    const S v = f(t);
-    if (v < e.value) e = {v, e.path, t};
-  }
-  auto point = [&](int side, const Extreme<S>& e) {
-    const ContactPath<S>& path = paths[e.path];
-    return touched_point(*c[static_cast<std::size_t>(side)], path.param(side, e.t), path.input(e.t));
+  std::array<Extreme<S>, kObjectives> best = scan_extremes(c, paths, steps);
+  for (int o = 0; o < kObjectives; ++o) refine_extreme(c, paths, steps, static_cast<Objective>(o), best[static_cast<std::size_t>(o)]);
+  auto point = [&](int side, Objective o) {
+    const Extreme<S>& e = best[static_cast<std::size_t>(o)];
+    return touched_point(*c[static_cast<std::size_t>(side)], paths[e.path].param(side, e.t), paths[e.path].input(e.t));
   };
   for (int side = 0; side < 2; ++side) {
-    const Extreme<S>& convex = best[static_cast<std::size_t>(side == 0 ? Objective::NegKappa0 : Objective::NegKappa1)];
-    const Extreme<S>& concave = best[static_cast<std::size_t>(side == 0 ? Objective::Kappa0 : Objective::Kappa1)];
+    const Objective convex = side == 0 ? Objective::NegKappa0 : Objective::NegKappa1;
+    const Objective concave = side == 0 ? Objective::Kappa0 : Objective::Kappa1;
     ContourCurvatureCheck<S>& info = out.contours[static_cast<std::size_t>(side)];
-    if (convex.value < S(0)) info.sharpest_convex = point(side, convex);
-    if (concave.value < S(0)) info.sharpest_concave = point(side, concave);
+    if (best[static_cast<std::size_t>(convex)].value < S(0)) info.sharpest_convex = point(side, convex);
+    if (best[static_cast<std::size_t>(concave)].value < S(0)) info.sharpest_concave = point(side, concave);
   }
-  const Extreme<S>& rel = best[static_cast<std::size_t>(Objective::Relative)];
-  out.worst = {point(0, rel), point(1, rel)};
+  out.worst = {point(0, Objective::Relative), point(1, Objective::Relative)};
   out.worst_relative = out.worst[0].kappa + out.worst[1].kappa;
   out.conformity = conformity_at(c, out.contours, out.worst, opt.osculation_band);
-
-  // A roller: a convex circle on one side (the smaller one when both are).
-  for (int side = 0; side < 2; ++side) {
-    const ContourCurvatureCheck<S>& info = out.contours[static_cast<std::size_t>(side)];
-    if (!info.circle || !(out.worst[static_cast<std::size_t>(side)].kappa > S(0))) continue;
-    if (out.roller < 0 || info.radius < out.contours[static_cast<std::size_t>(out.roller)].radius) out.roller = side;
-  }
-  if (out.roller >= 0 && out.conformity == Conformity::Interpenetrating) {
-    const std::size_t other = out.roller == 0 ? 1 : 0;
-    const S r = out.contours[static_cast<std::size_t>(out.roller)].radius;
-    for (int dir = -1; dir <= 1; dir += 2) {
-      const std::optional<S> u = undercut_end(*c[other], r, out.worst[other].u, dir, opt.cusp_search_steps);
-      if (!u) continue;
-      TouchedPoint<S>& cusp = out.cusps[dir < 0 ? 0 : 1];
-      cusp = touched_point(*c[other], *u, S(0));
-      cusp.input = std::numeric_limits<S>::quiet_NaN();  // a point of the contour, not necessarily touched
-    }
+  out.roller = roller_side(out);
+  if (out.roller < 0 || out.conformity != Conformity::Interpenetrating) return out;
+  // The undercut region of the roller on the other contour: its ends on either side of the worst point.
+  const std::size_t other = out.roller == 0 ? 1 : 0;
+  const S r = out.contours[static_cast<std::size_t>(out.roller)].radius;
+  for (int dir = -1; dir <= 1; dir += 2) {
+    const std::optional<S> u = undercut_end(*c[other], r, out.worst[other].u, dir, opt.cusp_search_steps);
+    if (!u) continue;
+    TouchedPoint<S>& cusp = out.cusps[dir < 0 ? 0 : 1];
+    cusp = touched_point(*c[other], *u, S(0));
+    cusp.input = std::numeric_limits<S>::quiet_NaN();  // a point of the contour, not necessarily touched
   }
   return out;
 }
