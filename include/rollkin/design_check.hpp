@@ -24,7 +24,8 @@
 // "Touched" covers the motion between the solved poses too: between two consecutive solved poses each contact
 // parameter follows the cubic Hermite interpolant of its values and rates there (linear where a pose is singular
 // and its rates are meaningless), sampled samples_per_step times, and the extreme samples are refined on that
-// path by Brent's minimisation. So a concave point passed between two poses is still found.
+// path (the zero of its slope, else Brent's minimisation). So a concave point passed between two poses is
+// still found.
 #pragma once
 
 #include "rollkin/geometry/curvature_sign.hpp"
