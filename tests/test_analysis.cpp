@@ -42,45 +42,6 @@ std::vector<double> with_neighbours(int from, int to, int step, double h) {
   return inputs;
 }
 
-/// Eccentric circular cam (radius R, centre e from the pivot at the origin along the cam's x-axis; input
-/// theta, the cam's angle) driving a follower that translates along the world y-axis through the pivot.
-/// The follower ends in a roller of radius r fixed to it (roller = true), or in a flat face through its
-/// origin tilted by beta from the perpendicular to the stroke. Variables: theta, s (follower height), u (cam
-/// circle), v (roller angle or position along the face). The guess is the exact pose at theta = 0.
-template <class S> Fixture<S> eccentric_cam(const S& R, const S& e, bool roller, const S& r, const S& beta = S(0)) {
-  using std::atan2;
-  using std::cos;
-  using std::sin;
-  using std::sqrt;
-  MechanismBuilder<S> b;
-  const int ground = b.link("ground", true), cam = b.link("cam"), follower = b.link("follower");
-  const int disk = b.contour(cam, "disk", Circle<S>(R), SE2<S>(S(0), Vec2<S>(e, S(0))));
-  // The follower's frame has its x-axis along the stroke (world +y): a prismatic slides along x.
-  const S quarter = pi<S>() / S(2);
-  const S reach = S(4) * (R + e);
-  const int tip = roller ? b.contour(follower, "roller", Circle<S>(r))
-                         // In the follower's frame angle beta - 90 deg is the world direction beta; material on
-                         // the face's left, i.e. above it (the follower's side).
-                         : b.contour(follower, "face", Line<S>(-reach, reach), SE2<S>(S(beta - quarter), Vec2<S>(S(0), S(0))));
-  const int pivot = b.revolute("pivot", ground, cam, SE2<S>(), SE2<S>(), "theta");
-  b.prismatic("guide", ground, follower, SE2<S>(quarter, Vec2<S>(S(0), S(0))), SE2<S>(), "s");
-  b.contact("contact", false, disk, tip, "u", "v");
-  b.driver(pivot);
-  Fixture<S> f{b.build(), VectorX<S>(4), {}};
-  if (roller) {
-    const S y0 = sqrt((R + r) * (R + r) - e * e);  // roller centre (0, y0), cam centre (e, 0)
-    // Contact on the line of centres: cam point in direction (-e, y0); the roller's point in the opposite
-    // direction, seen in the follower's frame (turned +90 deg): (-y0, -e).
-    f.guess << S(0), y0, atan2(y0, -e), atan2(-e, -y0);
-  } else {
-    const Vec2<S> n(-sin(beta), cos(beta));  // face normal (up), the cam's contact point is C + R n
-    const Vec2<S> point = Vec2<S>(e, S(0)) + n * R;
-    const S along = point.x() / cos(beta);  // point = (0, s) + along (cos beta, sin beta)
-    f.guess << S(0), S(point.y() - along * sin(beta)), atan2(n.y(), n.x()), along;
-  }
-  return f;
-}
-
 /// Analysis of every solved pose of a sweep (nothing for unsolved ones).
 std::vector<PoseAnalysis<double>> analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& res) {
   AnalysisData<double> data(m);

@@ -559,6 +559,39 @@ check "centrodes: the same link twice is exit 2 naming --links" $([ "$rc" -eq 2 
 run centrodes "$EX/antiparallelogram.json" --links crank nolink --out none
 check "centrodes: an unknown link is exit 2 listing the links" $([ "$rc" -eq 2 ] && grep -q '"follower"' err.txt; echo $?)
 
+# ---- rollkin check: undercut and conformity (docs/analysis.md "Design check") -----------------------------
+run check --help
+check "check --help exits 0 and describes the exit status" $([ "$rc" -eq 0 ] && grep -q -- "--max-steps" out.txt && grep -q "interpenetrates" out.txt; echo $?)
+run check "$EX/paper_fourbar.json"
+check "check on the paper example: exit 0, nothing on stderr, no finding" \
+  $([ "$rc" -eq 0 ] && [ ! -s err.txt ] && grep -q "no undercut or interpenetration" out.txt; echo $?)
+check "check on the paper example: the parabola's smallest radius 1/(2a) = 1 at its vertex, the disks 1 and 4" \
+  $(grep -q "link2.parabola: smallest convex radius of curvature 1 at A.x = " out.txt && grep -q "link3.rim: circle of radius 1 (convex)" out.txt \
+    && grep -q "link4.rim: circle of radius 4 (convex)" out.txt; echo $?)
+run check "$EX/hypocycloid.json"
+check "check on the planet inside its ring: the roller (radius 1) fits the ring's concave radius 4, exit 0" \
+  $([ "$rc" -eq 0 ] && grep -q "roller 'planet.disk' (radius 1) on 'frame.ring': fits its smallest concave radius 4$" out.txt; echo $?)
+UNDERCUT="$SRC/tests/data/undercut_ellipse.json"
+run check "$UNDERCUT"
+check "check on a roller too large for the groove: exit 1, one located line naming the pair" \
+  $([ "$rc" -eq 1 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "undercut: pair 'C': the roller 'follower.roller' (radius 1.5) is larger than the concave radius 1.333333333 of 'cam.groove'" err.txt; echo $?)
+check "check: the undercut is located at the vertex (u = 0, point 3, 0) at phi = 90 deg, with the cusps at +-14.81127 deg" \
+  $(grep -q "at C.u = 0 deg (point 3, 0), O.phi = 90.0000" err.txt && grep -q "cusp at C.u = -14.81127" err.txt && grep -q "C.u = 14.81127" err.txt; echo $?)
+run check "$UNDERCUT" --from 60 --to 120 --step 1
+check "check over a range past the cusps: exit 1, the dead points and the undercut reported" \
+  $([ "$rc" -eq 1 ] && grep -q "dead_point" err.txt && grep -q "undercut: pair 'C'" err.txt; echo $?)
+sed 's/"type": "circle", "radius": 1.5/"type": "ellipse", "semi_axes": [1.5, 1.5]/' "$UNDERCUT" > round_tip.json
+run check round_tip.json
+check "check on two non-circular contours that interpenetrate: exit 1, the pair and both contours named" \
+  $([ "$rc" -eq 1 ] && grep -q "interpenetration: the contours 'cam.groove' and 'follower.roller' of pair 'C' interpenetrate next to their contact at C.u = 0 deg (point 3, 0)" err.txt; echo $?)
+run solve "$UNDERCUT" --verbose
+check "solve --verbose prints the design check section with the undercut (solve's exit status unchanged)" \
+  $([ "$rc" -eq 0 ] && grep -q "^design check" out.txt && grep -q "undercut: pair 'C'" out.txt; echo $?)
+run check "$UNDERCUT" --step 0
+check "check --step 0: exit 2 naming --step" $([ "$rc" -eq 2 ] && grep -q -- "--step" err.txt; echo $?)
+run check "$UNDERCUT" --csv x.csv
+check "check --csv: unknown option, exit 2, nothing written" $([ "$rc" -eq 2 ] && grep -q 'unknown option "--csv" for check' err.txt && [ ! -e x.csv ]; echo $?)
+
 # ---- the benchmark's options (only when its path is given: ctest passes it when the benchmark is built) ----
 if [ -n "$BENCH" ]; then
   "$BENCH" --help >out.txt 2>err.txt; rc=$?
