@@ -227,3 +227,26 @@ BOOST_AUTO_TEST_CASE(tiny_radii_give_the_half_circle_over_the_chord) {
   BOOST_REQUIRE_EQUAL(flat.size(), 1u);
   BOOST_TEST(flat[0].points.size() == 2u);
 }
+
+// fuzz_svg (session 6): a chord of 1.1e-299 under radii (300, 45) underflowed the centre formula (F.6.5.2) to
+// an infinite factor and a NaN centre, later cast to int. The large arc is then the whole ellipse but for the
+// chord: 600 wide and 90 high; the small arc is no more than the chord.
+BOOST_AUTO_TEST_CASE(a_chord_tiny_against_the_radii_keeps_the_ellipse) {
+  auto extent = [](const auto& segs) {
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& s : segs)
+      for (double t = 0; t <= 1; t += 1.0 / 64) {  // the rational quadratic at t
+        const double b0 = (1 - t) * (1 - t), b1 = 2 * t * (1 - t), b2 = t * t;
+        const double w = b0 * s.weights[0] + b1 * s.weights[1] + b2 * s.weights[2];
+        const V p = (b0 * s.weights[0] * s.points[0] + b1 * s.weights[1] * s.points[1] + b2 * s.weights[2] * s.points[2]) / w;
+        BOOST_REQUIRE(std::isfinite(p.x()) && std::isfinite(p.y()));
+        x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+      }
+    return V(x1 - x0, y1 - y0);
+  };
+  const V large = extent(parse("M0 0 A-300 45 0 1 1 0 1.1e-299")[0].segments);
+  BOOST_TEST(std::abs(large.x() - 600) < 1e-9 * 600);
+  BOOST_TEST(std::abs(large.y() - 90) < 1e-9 * 90);
+  // The small arc is as degenerate as the straight line over the same chord, and read like it.
+  BOOST_TEST(parse("M0 0 A300 45 0 0 1 0 1.1e-299").size() == parse("M0 0 L0 1.1e-299").size());
+}

@@ -54,12 +54,18 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   // Radii whose ratio over- or underflows (1e300 against 1e-300) leave no ellipse to evaluate: the arc is
   // then as flat as its chord (F.6.6's straight line is the limit).
   if (!(std::isfinite(rx) && std::isfinite(ry) && rx > 0 && ry > 0)) return {Segment{{a.from, a.to}, {}}};
-  // F.6.5.2: centre in the ellipse's axes; the sign picks one of the two candidate centres.
-  const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
-  const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-  double k = lambda >= 1 ? 0.0 : std::sqrt(std::max(0.0, num / den));
-  if (a.large_arc == a.sweep) k = -k;
-  const double cx1 = k * rx * y1 / ry, cy1 = -k * ry * x1 / rx;
+  // F.6.5.2: centre in the ellipse's axes; the sign picks one of the two candidate centres. In the ellipse's
+  // unit-circle coordinates (u, v) = (x1 / rx, y1 / ry), m = |(u, v)|, its factor is k = sqrt(1 - m^2) / m, so
+  // cx1 = k rx v = rx sqrt(1 - m^2) (v / m) and cy1 = -ry sqrt(1 - m^2) (u / m). The direction (u, v) / m is
+  // taken from (x1, y1) scaled to order one: a chord tiny against the radii (fuzz_svg: 1e-299 under radii of
+  // 300) neither underflows m^2 nor makes k infinite and the centre NaN.
+  const double d = std::max(std::abs(x1), std::abs(y1));
+  if (d == 0) return {Segment{{a.from, a.to}, {}}};  // the half chord underflows: no arc to speak of
+  const double ud = x1 / d / rx, vd = y1 / d / ry, md = std::hypot(ud, vd);
+  const double m = md * d;
+  double root = lambda >= 1 ? 0.0 : std::sqrt(std::max(0.0, 1 - m * m));
+  if (a.large_arc == a.sweep) root = -root;
+  const double cx1 = root * rx * (vd / md), cy1 = -root * ry * (ud / md);
   // F.6.5.3: centre in user space.
   const P centre = P(c * cx1 - s * cy1, s * cx1 + c * cy1) + (a.from + a.to) / 2;
   // F.6.5.5-6: start angle and sweep.
