@@ -362,6 +362,12 @@ std::string Scene::unit_label(int variable) const {
   return "";
 }
 
+InputError assembly_error(const Scene& scene, const std::string& detail) {
+  return InputError(scene.file, "pairs",
+                    "the mechanism cannot be assembled: " + detail +
+                        "; expected pair frames, contour sizes and \"values\" that let every loop close");
+}
+
 Scene build_scene(const nlohmann::ordered_json& document, const std::string& file, const std::optional<std::string>& dir) {
   return SceneReader(file, document, dir ? fs::path(*dir) : fs::path(file).parent_path()).read();
 }

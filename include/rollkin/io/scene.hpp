@@ -58,6 +58,10 @@ Scene load_scene(const std::string& path);
 /// (they are resolved against its directory).
 Scene parse_scene(const std::string& text, const std::string& file);
 
+/// The error for a scene whose mechanism cannot be assembled (SolveStatus::CannotAssemble, `detail` from the
+/// assembly's report): a problem of the scene (sizes, frames, values), not a motion limit; named at "pairs".
+InputError assembly_error(const Scene& scene, const std::string& detail);
+
 /// Reads a scene file as a JSON document (io/json_document.hpp), without building the scene: the errors of
 /// load_scene about the file itself and its JSON syntax. load_scene(p) is build_scene(read_scene_document(p), p).
 nlohmann::ordered_json read_scene_document(const std::string& path);
