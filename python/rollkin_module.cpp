@@ -121,9 +121,21 @@ struct PyScene {
   std::string dir;   // relative contour files are resolved against it
 };
 
+/// `dir` is made absolute ("" is the working directory), so that a scene sent to another process (pickle, e.g.
+/// to dask workers) finds its contour files wherever that process runs.
 PyScene build(json document, const std::string& file, const std::string& dir) {
-  auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, dir));
-  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, dir};
+  const std::string where = (dir.empty() ? std::filesystem::current_path() : std::filesystem::absolute(dir)).string();
+  auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, where));
+  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where};
+}
+
+/// Pickling: the document as JSON text, the name and the directory; unpickling builds the scene again.
+py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), s.file, s.dir); }
+
+PyScene scene_from_state(const py::tuple& t) {
+  if (t.size() != 3) throw py::value_error("rollkin.Scene: a pickled state is (document, file, dir)");
+  const std::string file = t[1].cast<std::string>();
+  return build(rollkin::io::parse_json_document(t[0].cast<std::string>(), file), file, t[2].cast<std::string>());
 }
 
 PyScene load_scene(const py::object& path) {
@@ -411,7 +423,8 @@ PYBIND11_MODULE(rollkin, m) {
 
   py::class_<PyScene>(m, "Scene",
                       "A scene: a mechanism with its assembly pose and optional sweep, built from a JSON document.\n"
-                      "Create it with load_scene(path) or scene(dict); it never changes (modified() returns a new one).")
+                      "Create it with load_scene(path) or scene(dict); it never changes (modified() returns a new one).\n"
+                      "Scenes pickle (as their JSON document), so they can be sent to other processes (dask workers).")
       .def("solve",
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
               bool analysis, bool rates, double max_steps) {
@@ -432,6 +445,7 @@ PYBIND11_MODULE(rollkin, m) {
                              "The full names of the inputs (drivers), e.g. [\"O_A.theta2\"].")
       .def_property_readonly("sweep", &sweep_dict,
                              "The scene's own sweep as {\"input\", \"from\", \"to\", \"step\"} (file units), or None.")
+      .def(py::pickle(&scene_state, &scene_from_state))
       .def("__repr__", [](const PyScene& s) { return "<rollkin.Scene " + s.file + ">"; });
 
   m.def("load_scene", &load_scene, py::arg("path"),

@@ -10,9 +10,12 @@ import json
 import math
 import os
 import pathlib
+import pickle
 import pydoc
+import re
 import signal
 import subprocess
+import sys
 import threading
 import time
 
@@ -379,3 +382,53 @@ def test_help_shows_the_docstrings():
                  "JSON path", "analysis"):
         assert word in text, word
     assert issubclass(rollkin.InputError, ValueError)
+
+
+# ---- the examples under examples/python -------------------------------------------------------------------
+
+def run_example(name, *args):
+    env = dict(os.environ)
+    return subprocess.run([sys.executable, str(SRC / "examples" / "python" / name), *args], capture_output=True,
+                          text=True, env=env, timeout=300)
+
+
+def test_fit_profile_recovers_the_design():
+    pytest.importorskip("scipy")
+    proc = run_example("fit_profile.py", "--target-a", "0.6", "--target-x", "6.9")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    fitted = re.search(r"fitted a = ([-0-9.e]+), pivot x = ([-0-9.e]+)", proc.stdout)
+    assert abs(float(fitted.group(1)) - 0.6) < 1e-8 and abs(float(fitted.group(2)) - 6.9) < 1e-8, proc.stdout
+
+
+def test_design_study_on_dask_equals_the_same_variants_solved_here(tmp_path):
+    pytest.importorskip("dask.distributed")
+    out = tmp_path / "study.csv"
+    proc = run_example("design_study.py", "--out", str(out), "--grid", "3", "--workers", "1", "--chunk", "4")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    with open(out, newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 9
+    base = rollkin.load_scene(PAPER)
+    for r in rows:
+        a, x = float(r["a"]), float(r["pivot_x"])
+        t = base.modified({"links[1].contours[0].a": a, "pairs[3].at[0].x": x}).solve(analysis=True)
+        ok = t["status"] == "ok"
+        assert int(r["solved"]) == ok.sum() and int(r["poses"]) == len(ok)
+        assert r["first_problem"] == next((s for s in t["status"] if s != "ok"), "")
+        swing = t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
+        assert float(r["swing_deg"]) == swing
+        assert float(r["max_pressure_angle_B_deg"]) == np.nanmax(t["B.pressure_angle"][ok])
+    assert {r["first_problem"] for r in rows} >= {"", "domain_exit"}  # the grid spans both outcomes
+
+
+def test_scenes_pickle_as_their_document(tmp_path):
+    scene = rollkin.load_scene(SRC / "examples" / "dxf_cam.json")  # with a relative contour file
+    variant = scene.modified({"sweep.step": 10})
+    copy = pickle.loads(pickle.dumps(variant))
+    assert copy.file == variant.file and copy.document() == variant.document()
+    cwd = os.getcwd()
+    try:
+        os.chdir(tmp_path)  # elsewhere: the contour file is still found
+        assert_tables_equal(pickle.loads(pickle.dumps(variant)).solve(), variant.solve())
+    finally:
+        os.chdir(cwd)
