@@ -287,6 +287,7 @@ def test_solve_many_equals_solving_each_alone(threads):
     alone = [s.solve(-50, 100, 0.5, analysis=True) for s in scenes]
     together = rollkin.solve_many(scenes, -50, 100, 0.5, threads=threads, analysis=True)
     assert len(together) == len(scenes)
+    assert rollkin.solve_many([], -50, 100, 1, threads=threads) == []
     for a, b in zip(alone, together):
         assert_tables_equal(a, b)
 
