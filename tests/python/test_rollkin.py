@@ -245,20 +245,11 @@ def test_scene_from_its_document_solves_like_the_file():
 def test_dict_scene_with_a_samples_contour_equals_the_cli_on_the_same_file(tmp_path):
     # A cam disk given as samples of an offset circle, lifting a flat follower: built in Python, then written
     # as JSON for the CLI.
-    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
-    xy = np.c_[2.0 * np.cos(phi) + 0.5, 2.0 * np.sin(phi)]
-    cam = rollkin.samples(xy, name="profile", closed=True)
-    assert cam["type"] == "samples" and len(cam["points"]) == 72
-    doc = json.loads((SRC / "examples" / "dxf_cam.json").read_text())
-    cam_link = next(l for l in doc["links"] if any(c.get("type") == "dxf" for c in l.get("contours", [])))
-    old = next(c for c in cam_link["contours"] if c.get("type") == "dxf")
-    cam.update({k: v for k, v in old.items() if k in ("material", "at")})
-    cam["name"] = old["name"]
-    cam_link["contours"] = [cam if c is old else c for c in cam_link["contours"]]
-    doc.pop("units", None)
+    doc, scene = sampled_cam_scene()
+    cams = [c for l in doc["links"] for c in l.get("contours", []) if c["type"] == "samples"]
+    assert len(cams) == 1 and len(cams[0]["points"]) == 72
     written = tmp_path / "cam_samples.json"
     written.write_text(json.dumps(doc))
-    scene = rollkin.scene(doc)
     header, rows, _ = cli_csv(written, 0, 360, 10, tmp_path)
     table = scene.solve(0, 360, 10)
     assert_table_equals_csv(table, header, rows)
@@ -290,6 +281,30 @@ def test_solve_many_equals_solving_each_alone(threads):
     assert rollkin.solve_many([], -50, 100, 1, threads=threads) == []
     for a, b in zip(alone, together):
         assert_tables_equal(a, b)
+
+
+def sampled_cam_scene():
+    """The DXF cam example with its cam replaced by samples of an offset circle (a spline contour)."""
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    cam = rollkin.samples(np.c_[2.0 * np.cos(phi) + 0.5, 2.0 * np.sin(phi)], name="profile", closed=True)
+    doc = json.loads((SRC / "examples" / "dxf_cam.json").read_text())
+    for link in doc["links"]:
+        for k, c in enumerate(link.get("contours", [])):
+            if c.get("type") == "dxf":
+                cam.update({key: v for key, v in c.items() if key in ("material", "at")}, name=c["name"])
+                link["contours"][k] = cam
+    doc.pop("units", None)
+    return doc, rollkin.scene(doc)
+
+
+def test_one_scene_shared_by_several_threads_gives_what_it_gives_alone():
+    # Every example and a spline contour, each three times in one batch: the same Scene object is solved by
+    # several threads at once.
+    scenes = [rollkin.load_scene(p) for p in EXAMPLES] + [sampled_cam_scene()[1]]
+    alone = [s.solve() for s in scenes]
+    batch = rollkin.solve_many(scenes * 3, threads=3)
+    for k, table in enumerate(batch):
+        assert_tables_equal(table, alone[k % len(scenes)])
 
 
 def test_a_variant_that_cannot_assemble_does_not_stop_the_batch():
