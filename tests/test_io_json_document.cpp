@@ -122,3 +122,59 @@ BOOST_AUTO_TEST_CASE(malformed_json_names_line_column_and_path) {
   const InputError longer = error_of("{\"a\": \"" + std::string(100000, 'x'));
   BOOST_TEST(std::string(longer.what()).size() < 400u);
 }
+
+// ---- set_at_path: overrides by JSON path (the Python module's Scene.modified) -----------------------------
+
+namespace {
+
+/// The InputError of set_at_path(doc, path, value), which must throw one.
+InputError override_error(json doc, const std::string& path, const json& value = 1) {
+  try {
+    rollkin::io::set_at_path(doc, path, value, "scene.json");
+  } catch (const InputError& e) {
+    return e;
+  }
+  BOOST_FAIL("no InputError for the path " + path);
+  throw;
+}
+
+const char* const kSmallScene = R"({"links": [{"name": "g"}, {"name": "c", "contours": [{"name": "p", "a": 0.5}]}],
+                                    "sweep": {"from": 0, "to": 1}})";
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(set_at_path_replaces_the_value_at_keys_and_indices) {
+  json doc = parse_json_document(kSmallScene, "scene.json");
+  rollkin::io::set_at_path(doc, "links[1].contours[0].a", 0.75, "scene.json");
+  BOOST_TEST(doc["links"][1]["contours"][0]["a"].get<double>() == 0.75);
+  rollkin::io::set_at_path(doc, "sweep.to", json::array({1, 2}), "scene.json");
+  BOOST_TEST(doc["sweep"]["to"] == json::array({1, 2}));
+  rollkin::io::set_at_path(doc, "sweep.to[1]", "x", "scene.json");
+  BOOST_TEST(doc["sweep"]["to"][1] == "x");
+  // The last step may add a key (the scene reader then checks whether it is allowed); nothing else changed.
+  rollkin::io::set_at_path(doc, "links[0].ground", true, "scene.json");
+  BOOST_TEST(doc["links"][0]["ground"] == true);
+  BOOST_TEST(doc["links"][0].size() == 2u);
+  BOOST_TEST(doc["links"][1]["name"] == "c");
+  rollkin::io::set_at_path(doc, "links", json::array(), "scene.json");
+  BOOST_TEST(doc["links"].empty());
+}
+
+BOOST_AUTO_TEST_CASE(set_at_path_errors_name_the_path_and_what_is_there) {
+  const json doc = parse_json_document(kSmallScene, "scene.json");
+  const InputError beyond = override_error(doc, "links[2].name");
+  BOOST_TEST(beyond.file() == "scene.json");
+  BOOST_TEST(beyond.location() == "links[2].name");
+  BOOST_TEST(beyond.message() == "no element [2]: links has 2 element(s)");
+  const InputError missing = override_error(doc, "links[1].contour[0].a");
+  BOOST_TEST(missing.message() == "no key \"contour\" in links[1]; its keys are \"name\", \"contours\"");
+  BOOST_TEST(override_error(doc, "links[1].name[0]").message() == "links[1].name is a string, not an array; there is no [0]");
+  BOOST_TEST(override_error(doc, "sweep[0]").message() == "sweep is an object, not an array; there is no [0]");
+  BOOST_TEST(override_error(doc, "links.name").message() == "links is an array, not an object; there is no key \"name\"");
+  for (const char* bad : {"", ".", "links.", ".links", "links..a", "links[", "links[]", "links[x]", "links[-1]", "links]",
+                          "links[1]name", "links[1].", "a]b", "links[99999999999999999999]"}) {
+    const InputError e = override_error(doc, bad);
+    BOOST_TEST(e.location() == bad);
+    BOOST_TEST(contains(e.message(), "not a JSON path"), bad);
+  }
+}

@@ -384,3 +384,37 @@ BOOST_AUTO_TEST_CASE(json_errors_carry_line_column_and_full_path) {
   BOOST_TEST(contains(deep, "deep.json:10:"));
   BOOST_TEST(contains(deep, "nested deeper than 256 levels at links[3].contours[0].x[0][0]"));
 }
+
+// ---- scenes from a JSON document (build_scene): the Python module's scene(dict) and Scene.modified --------
+
+BOOST_AUTO_TEST_CASE(build_scene_resolves_contour_files_against_the_given_directory) {
+  const std::string file = kExamples + "dxf_cam.json";  // its cam is the DXF file "../shapes/cam_profile.dxf"
+  const Scene from_file = load_scene(file);
+  const nlohmann::ordered_json doc = rollkin::io::read_scene_document(file);
+  const Scene built = rollkin::io::build_scene(doc, "in memory", kExamples);
+  BOOST_TEST(built.file == "in memory");
+  BOOST_TEST(built.files_read == from_file.files_read, boost::test_tools::per_element());
+  BOOST_TEST(built.guess == from_file.guess);
+  BOOST_TEST(built.mechanism.variable_count() == from_file.mechanism.variable_count());
+  // Without a directory, relative files are looked up next to `file` (here: a directory that does not
+  // exist), and the error names the file given and the JSON path of the contour file.
+  const std::string msg = input_error_of([&] { rollkin::io::build_scene(doc, "no/such/dir/in memory"); });
+  BOOST_TEST(contains(msg, "no/such/dir/in memory:links["));
+  BOOST_TEST(contains(msg, "].file"));
+  BOOST_TEST(contains(msg, "cam_profile.dxf"));
+}
+
+BOOST_AUTO_TEST_CASE(build_scene_checks_a_document_like_a_file) {
+  nlohmann::ordered_json doc = rollkin::io::read_scene_document(kExamples + "paper_fourbar.json");
+  rollkin::io::set_at_path(doc, "links[1].contours[0].a", "wide", "paper (modified)");
+  const std::string msg = input_error_of([&] { rollkin::io::build_scene(doc, "paper (modified)"); });
+  BOOST_TEST(contains(msg, "paper (modified):links[1].contours[0].a: expected"));
+  BOOST_TEST(input_error_of([] { rollkin::io::build_scene(nlohmann::ordered_json::array(), "doc"); }) ==
+             "doc: the scene must be a JSON object, got an array");
+  // The same document as text and as a document give the same scene.
+  rollkin::io::set_at_path(doc, "links[1].contours[0].a", 0.625, "paper (modified)");
+  const Scene a = rollkin::io::build_scene(doc, "x.json");
+  const Scene b = rollkin::io::parse_scene(doc.dump(), "x.json");
+  BOOST_TEST(a.guess == b.guess);
+  BOOST_TEST(a.mechanism.contours[0].jet(0.3, 2).p == b.mechanism.contours[0].jet(0.3, 2).p);
+}

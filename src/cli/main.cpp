@@ -223,10 +223,7 @@ SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd
   g_doing = "assembling the mechanism";
   q = scene.guess;
   const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
-  if (assembly.status == SolveStatus::CannotAssemble)
-    throw InputError(scene.file, "pairs",
-                     "the mechanism cannot be assembled: " + assembly.detail +
-                         "; expected pair frames, contour sizes and \"values\" that let every loop close");
+  if (assembly.status == SolveStatus::CannotAssemble) throw io::assembly_error(scene, assembly.detail);
   return assembly;
 }
 

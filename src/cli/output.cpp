@@ -20,12 +20,8 @@ namespace rollkin::cli {
 namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
-const io::AngleUnit kOutputAngle = io::AngleUnit::Degree;  // outputs give angles in degrees
-
-/// Output units: degrees for angles, scene units otherwise.
-double out_scale(const Mechanism<double>& m, int var) {
-  return m.variables[var].kind == ParamKind::Angle ? io::from_radians(1.0, kOutputAngle) : 1.0;
-}
+using io::kOutputAngle;
+double out_scale(const Mechanism<double>& m, int var) { return io::output_scale(m, var); }
 
 std::string axis_label(const OutputContext& ctx, int var) {
   const Mechanism<double>& m = ctx.scene.mechanism;
@@ -40,47 +36,6 @@ std::string axis_label(const OutputContext& ctx, int var) {
 std::string strip_header(const std::string& svg) {
   const std::size_t at = svg.find("<svg");
   return at == std::string::npos ? svg : svg.substr(at);
-}
-
-const char* const kContactColumns[] = {"pressure_angle", "sliding", "slide_to_roll", "kappa1", "kappa2", "relative_curvature"};
-const std::size_t kContactColumnCount = sizeof(kContactColumns) / sizeof(kContactColumns[0]);
-
-std::size_t analysis_column_count(const Mechanism<double>& m) {
-  return contact_pairs(m).size() * kContactColumnCount + 2 * (m.links.size() - 1) + 2 * m.unknowns.size();
-}
-
-/// --analysis columns (docs/analysis.md): per contact pair P the P.<quantity> columns, per moving link
-/// <link>.accel and <link>.jerk, per unknown v d2(v)/d(input)2 and d3(v)/d(input)3.
-void analysis_columns(const Mechanism<double>& m, int input, std::vector<std::string>& cols) {
-  for (int k : contact_pairs(m))
-    for (const char* q : kContactColumns) cols.push_back(m.pairs[k].name + "." + q);
-  for (const char* q : {".accel", ".jerk"})
-    for (std::size_t l = 0; l < m.links.size(); ++l)
-      if (static_cast<int>(l) != m.ground) cols.push_back(m.links[l].name + q);
-  for (const char* order : {"2", "3"})
-    for (int i : m.unknowns)
-      cols.push_back(std::string("d") + order + "(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")" + order);
-}
-
-/// The analysis of one pose in output units: pressure angle in degrees, sliding per unit of the input's
-/// output unit (per degree for an angle input, like the rate columns), curvatures in 1/scene unit, angular
-/// accelerations in degrees per input unit squared, jerks per input unit cubed.
-void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, std::vector<double>& row) {
-  const double degrees = io::from_radians(1.0, kOutputAngle);
-  for (const ContactAnalysis<double>& c : a.contacts) {
-    row.push_back(c.pressure_angle * degrees);
-    row.push_back(c.sliding / in_scale);
-    row.push_back(c.slide_to_roll);
-    row.push_back(c.kappa1);
-    row.push_back(c.kappa2);
-    row.push_back(c.relative_curvature);
-  }
-  for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_acceleration[l] * degrees / (in_scale * in_scale));
-  for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_jerk[l] * degrees / (in_scale * in_scale * in_scale));
-  for (int i : m.unknowns) row.push_back(a.qddot(i) * out_scale(m, i) / (in_scale * in_scale));
-  for (int i : m.unknowns) row.push_back(a.qdddot(i) * out_scale(m, i) / (in_scale * in_scale * in_scale));
 }
 
 /// Charts stacked top to bottom in one SVG document (nested <svg> elements); a single chart as it is.
@@ -209,89 +164,9 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
 
 }  // namespace
 
-SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result) {
-  AnalysisData<double> data(m);
-  SweepAnalysis out;
-  out.reserve(result.poses.size());
-  for (const SweepPose<double>& p : result.poses)
-    out.push_back(p.report.has_pose() ? std::optional(analyse_pose(m, p.q, p.qdot, data)) : std::nullopt);
-  return out;
-}
-
-std::vector<int> contact_pairs(const Mechanism<double>& m) {
-  std::vector<int> k;
-  for (std::size_t p = 0; p < m.pairs.size(); ++p)
-    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
-  return k;
-}
-
 std::string base_name(const std::string& file) { return std::filesystem::path(file).filename().string(); }
 
-std::string input_column_unit(const OutputContext& ctx) {
-  switch (ctx.scene.mechanism.variables[ctx.sweep.variable].kind) {
-    case ParamKind::Angle: return io::unit_label(kOutputAngle);
-    case ParamKind::Length: return ctx.scene.length_unit;
-    case ParamKind::Unitless: return "";
-  }
-  return "";
-}
-
-double input_column(const OutputContext& ctx, std::size_t r) {
-  // From the requested values in file units (exact grid values for a "deg" file).
-  const bool radians_file_angle = ctx.scene.angle_unit != kOutputAngle &&
-                                  ctx.scene.mechanism.variables[ctx.sweep.variable].kind == ParamKind::Angle;
-  return radians_file_angle ? io::from_radians(ctx.inputs[r], kOutputAngle) : ctx.inputs[r];
-}
-
-std::string csv_text(const OutputContext& ctx, bool rates) {
-  const Mechanism<double>& m = ctx.scene.mechanism;
-  const int input = ctx.sweep.variable;
-  std::vector<std::string> cols{m.variables[input].name};
-  std::vector<int> others;
-  for (int i = 0; i < m.variable_count(); ++i)
-    if (i != input) {
-      others.push_back(i);
-      cols.push_back(m.variables[i].name);
-    }
-  if (rates)
-    for (int i : m.unknowns) cols.push_back("d(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")");
-  for (const auto& l : m.links) {
-    cols.push_back(l.name + ".x");
-    cols.push_back(l.name + ".y");
-    cols.push_back(l.name + ".angle");
-  }
-  const bool analysis = ctx.analysis != nullptr;
-  if (analysis) analysis_columns(m, input, cols);
-  cols.push_back("residual");
-  io::CsvWriter csv(cols, "status");
-  KinematicsData<double> kin(m);
-  const double in_scale = out_scale(m, input);
-  for (std::size_t r = 0; r < ctx.result.poses.size(); ++r) {
-    const auto& pose = ctx.result.poses[r];
-    std::vector<double> row{input_column(ctx, r)};
-    const bool ok = pose.report.has_pose();  // values also for singular poses
-    for (int i : others) row.push_back(ok ? pose.q(i) * out_scale(m, i) : kNaN);
-    if (rates)
-      for (int i : m.unknowns) row.push_back(ok ? pose.qdot(i) * out_scale(m, i) / in_scale : kNaN);
-    std::vector<SE2<double>> lp;
-    if (ok) {
-      evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);
-      lp = link_poses(m, kin);
-    }
-    for (std::size_t l = 0; l < m.links.size(); ++l) {
-      row.push_back(ok ? lp[l].translation().x() : kNaN);
-      row.push_back(ok ? lp[l].translation().y() : kNaN);
-      row.push_back(ok ? io::from_radians(lp[l].angle(), kOutputAngle) : kNaN);
-    }
-    if (analysis) {
-      if (const auto& a = (*ctx.analysis)[r]) analysis_values(m, *a, in_scale, row);
-      else row.resize(row.size() + analysis_column_count(m), kNaN);
-    }
-    row.push_back(ok ? pose.report.residual : kNaN);
-    csv.add_row(row, to_string(pose.report.status));
-  }
-  return csv.to_string();
-}
+std::string csv_text(const OutputContext& ctx, bool rates) { return io::sweep_table(ctx, rates).csv(); }
 
 std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b,
                           bool in_a) {

@@ -6,6 +6,7 @@
 #include "rollkin/analysis.hpp"
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/scene.hpp"
+#include "rollkin/io/sweep_table.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <Eigen/Core>
@@ -16,23 +17,16 @@
 
 namespace rollkin::cli {
 
-/// The contact analysis (docs/analysis.md) of every pose of a sweep, computed once for all the writers;
-/// empty where the pose was not solved.
-using SweepAnalysis = std::vector<std::optional<PoseAnalysis<double>>>;
-SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result);
+// The table of a solved sweep lives in the library (rollkin/io/sweep_table.hpp, shared with the Python module);
+// these names keep the CLI's writers as they were.
+using OutputContext = io::SweepOutput;
+using io::analyse_sweep;
+using io::contact_pairs;
+using io::input_column;
+using io::input_column_unit;
+using io::SweepAnalysis;
 
-struct OutputContext {
-  const io::Scene& scene;
-  const io::Sweep& sweep;
-  const SweepResult<double>& result;
-  const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
-  const SweepAnalysis* analysis = nullptr;  // set with --analysis: its columns and charts are added
-};
-
-/// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
-/// <link>.x, <link>.y, <link>.angle, (ctx.analysis) per cam or rolling pair P the columns P.pressure_angle,
-/// P.sliding, P.slide_to_roll, P.kappa1, P.kappa2, P.relative_curvature and per moving link <link>.accel
-/// (docs/analysis.md), residual, status. Angles in degrees, lengths in scene units, rates per input unit.
+/// The sweep's table (io::sweep_table: its columns) as CSV text.
 std::string csv_text(const OutputContext& ctx, bool rates);
 
 /// SVG charts against the input, stacked in one document: the non-input pair angles; the lengths and
@@ -58,12 +52,6 @@ std::string draw_svg(const OutputContext& ctx);
 /// The file name of a path, without its directories (titles of the outputs).
 std::string base_name(const std::string& file);
 
-/// The unit of the input column: degrees for an angle, the scene's length unit for a length, "" otherwise.
-std::string input_column_unit(const OutputContext& ctx);
-
-/// The value of the input column of row r (output units: degrees for an angle), as csv_text writes it.
-double input_column(const OutputContext& ctx, std::size_t r);
-
 /// A link as drawn, in its own frame: --draw places it at each drawn pose, --animate draws it once and moves
 /// it with one transform per frame.
 struct LinkSketch {
@@ -76,9 +64,6 @@ struct LinkSketch {
   std::vector<std::string> pivot_names;  // ground: the names of those pairs
 };
 std::vector<LinkSketch> link_sketches(const Mechanism<double>& m);
-
-/// The contact pairs (cam and rolling) in pair order: the order of the analysis columns and contact_points().
-std::vector<int> contact_pairs(const Mechanism<double>& m);
 
 /// The world contact point of every contact pair (on its link_a's contour) at poses lp with kin evaluated.
 std::vector<Eigen::Vector2d> contact_points(const Mechanism<double>& m, const KinematicsData<double>& kin,

@@ -1,6 +1,8 @@
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/text_position.hpp"
 
+#include "json_access.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <unordered_set>
@@ -178,6 +180,84 @@ nlohmann::ordered_json parse_json_document(const std::string& text, const std::s
   const TrackingIterator first(text.data(), &read_to), last(text.data() + text.size(), &read_to);
   json::sax_parse(first, last, &builder);  // errors throw from the builder
   return builder.take();
+}
+
+namespace {
+
+/// One step of a JSON path: a key of an object, or an index of an array.
+struct PathStep {
+  bool is_index = false;
+  std::string key;
+  std::size_t index = 0;
+};
+
+/// The steps of "a.b[2][0].c"; an empty vector when the path is malformed.
+std::vector<PathStep> path_steps(const std::string& path) {
+  std::vector<PathStep> steps;
+  std::size_t i = 0;
+  const std::size_t n = path.size();
+  while (i < n) {
+    if (path[i] == '[') {
+      const std::size_t close = path.find(']', i);
+      if (close == std::string::npos || close == i + 1) return {};
+      PathStep s;
+      s.is_index = true;
+      for (std::size_t k = i + 1; k < close; ++k) {
+        if (path[k] < '0' || path[k] > '9' || s.index > 100000000) return {};
+        s.index = s.index * 10 + static_cast<std::size_t>(path[k] - '0');
+      }
+      steps.push_back(s);
+      i = close + 1;
+      if (i < n && path[i] != '.' && path[i] != '[') return {};
+      if (i < n && path[i] == '.' && ++i == n) return {};
+      continue;
+    }
+    const std::size_t end = path.find_first_of(".[]", i);
+    const std::size_t stop = end == std::string::npos ? n : end;
+    if (stop == i || (end != std::string::npos && path[end] == ']')) return {};
+    PathStep s;
+    s.key = path.substr(i, stop - i);
+    steps.push_back(s);
+    i = stop;
+    if (i < n && path[i] == '.' && ++i == n) return {};
+  }
+  return steps;
+}
+
+}  // namespace
+
+void set_at_path(json& document, const std::string& path, json value, const std::string& file) {
+  const std::vector<PathStep> steps = path_steps(path);
+  if (steps.empty())
+    throw InputError(file, path, "not a JSON path; expected keys joined by '.' with array indices in brackets, "
+                                 "e.g. \"links[1].contours[0].a\"");
+  json* at = &document;
+  std::string where;  // the path walked so far ("" = the document)
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const PathStep& s = steps[k];
+    const bool last = k + 1 == steps.size();
+    const std::string here = where.empty() ? "the document" : where;
+    if (s.is_index) {
+      if (!at->is_array())
+        throw InputError(file, path, here + " is " + kind_of(*at) + ", not an array; there is no [" + std::to_string(s.index) + "]");
+      if (s.index >= at->size())
+        throw InputError(file, path, "no element [" + std::to_string(s.index) + "]: " + here + " has " +
+                                         std::to_string(at->size()) + " element(s)");
+      where = index(where, s.index);
+      at = &(*at)[s.index];
+    } else {
+      if (!at->is_object())
+        throw InputError(file, path, here + " is " + kind_of(*at) + ", not an object; there is no key \"" + s.key + "\"");
+      if (!last && !at->contains(s.key)) {
+        std::vector<std::string> keys;
+        for (auto it = at->begin(); it != at->end(); ++it) keys.push_back(it.key());
+        throw InputError(file, path, "no key \"" + s.key + "\" in " + here + "; its keys are " + quoted_list(keys));
+      }
+      where = child(where, s.key);
+      at = &(*at)[s.key];
+    }
+  }
+  *at = std::move(value);
 }
 
 }  // namespace rollkin::io

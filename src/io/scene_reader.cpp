@@ -27,9 +27,10 @@ constexpr int kContactSamples = 2000;
 
 class SceneReader {
  public:
-  SceneReader(std::string file, const std::string& text) : file_(std::move(file)), js_(file_) {
-    dir_ = fs::path(file_).parent_path();
-    root_ = parse(text);
+  /// `dir`: where relative contour files are looked up.
+  SceneReader(std::string file, json document, fs::path dir) : file_(std::move(file)), js_(file_), dir_(std::move(dir)) {
+    root_ = std::move(document);
+    if (!root_.is_object()) fail("", "the scene must be a JSON object, got " + kind_of(root_));
   }
 
   Scene read() {
@@ -50,13 +51,6 @@ class SceneReader {
 
  private:
   [[noreturn]] void fail(const std::string& path, const std::string& message) const { js_.fail(path, message); }
-
-  // ---- the JSON document ----------------------------------------------------------------------------
-  json parse(const std::string& text) {
-    json j = parse_json_document(text, file_);
-    if (!j.is_object()) fail("", "the scene must be a JSON object, got " + kind_of(j));
-    return j;
-  }
 
   // ---- sections -------------------------------------------------------------------------------------
   void read_units(Scene& scene) {
@@ -368,16 +362,28 @@ std::string Scene::unit_label(int variable) const {
   return "";
 }
 
-Scene parse_scene(const std::string& text, const std::string& file) { return SceneReader(file, text).read(); }
+InputError assembly_error(const Scene& scene, const std::string& detail) {
+  return InputError(scene.file, "pairs",
+                    "the mechanism cannot be assembled: " + detail +
+                        "; expected pair frames, contour sizes and \"values\" that let every loop close");
+}
 
-Scene load_scene(const std::string& path) {
+Scene build_scene(const nlohmann::ordered_json& document, const std::string& file, const std::optional<std::string>& dir) {
+  return SceneReader(file, document, dir ? fs::path(*dir) : fs::path(file).parent_path()).read();
+}
+
+Scene parse_scene(const std::string& text, const std::string& file) { return build_scene(parse_json_document(text, file), file); }
+
+nlohmann::ordered_json read_scene_document(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw InputError(path, "", "is a directory; expected a scene file (JSON)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the scene file (" + std::string(std::strerror(errno)) + ")");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), path);
+  return parse_json_document(text.str(), path);
 }
+
+Scene load_scene(const std::string& path) { return build_scene(read_scene_document(path), path); }
 
 }  // namespace rollkin::io

@@ -29,4 +29,12 @@ constexpr std::size_t kMaxJsonDepth = 256;
 nlohmann::ordered_json parse_json_document(const std::string& text, const std::string& file,
                                            std::size_t max_depth = kMaxJsonDepth);
 
+/// Replaces the value at `path` of `document` (a JSON path as the scene's messages write it, e.g.
+/// "links[1].contours[0].a": keys joined by '.', array indices in brackets) by `value`. Every step but the
+/// last must exist; the last may also be a new key of an object (whoever reads the document then checks it).
+/// A malformed path, a missing key or index, or a step into a value that is not an object or array is an
+/// InputError naming `file` and `path`, what is there and what was expected.
+void set_at_path(nlohmann::ordered_json& document, const std::string& path, nlohmann::ordered_json value,
+                 const std::string& file);
+
 }  // namespace rollkin::io

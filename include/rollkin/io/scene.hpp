@@ -14,6 +14,7 @@
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
+#include "rollkin/io/json_document.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/kinematics.hpp"
 #include "rollkin/solve/sweep_grid.hpp"
@@ -56,5 +57,19 @@ Scene load_scene(const std::string& path);
 /// Builds a scene from JSON text; `file` names the source in messages and anchors relative contour paths
 /// (they are resolved against its directory).
 Scene parse_scene(const std::string& text, const std::string& file);
+
+/// The error for a scene whose mechanism cannot be assembled (SolveStatus::CannotAssemble, `detail` from the
+/// assembly's report): a problem of the scene (sizes, frames, values), not a motion limit; named at "pairs".
+InputError assembly_error(const Scene& scene, const std::string& detail);
+
+/// Reads a scene file as a JSON document (io/json_document.hpp), without building the scene: the errors of
+/// load_scene about the file itself and its JSON syntax. load_scene(p) is build_scene(read_scene_document(p), p).
+nlohmann::ordered_json read_scene_document(const std::string& path);
+
+/// Builds a scene from a parsed JSON document (e.g. one edited with io::set_at_path, or built by a program);
+/// `file` names the source in messages; relative contour paths are resolved against `dir`, by default the
+/// directory of `file`.
+Scene build_scene(const nlohmann::ordered_json& document, const std::string& file,
+                  const std::optional<std::string>& dir = std::nullopt);
 
 }  // namespace rollkin::io

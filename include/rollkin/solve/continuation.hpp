@@ -25,6 +25,7 @@
 #include "rollkin/solve/position.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <sstream>
 
 namespace rollkin {
@@ -45,6 +46,9 @@ template <class S> struct ContinuationSettings {
   S max_correction_ratio = S(1) / S(2);
   S ill_conditioned = S(100);        // condition growth (vs the sweep's start) that marks a dead point
   Predictor predictor = Predictor::Hermite;
+  /// Cancellation (e.g. a Ctrl-C in the Python module): when set and true, sweep() stops before the next
+  /// requested pose; the poses not reached keep the status NotReached.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 template <class S> struct SweepPose {
@@ -529,6 +533,7 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
     if (side->empty()) continue;
     detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
+      if (cfg.cancel && cfg.cancel->load(std::memory_order_relaxed)) return out;
       SweepPose<S>& pose = out.poses[(*side)[k]];
       const SolveReport<S> rep = tracer.advance(pose.input);
       if (!rep.has_pose()) {  // this input and all beyond it on this side are past the limit

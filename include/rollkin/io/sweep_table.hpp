@@ -1,0 +1,73 @@
+// The result table of a solved sweep: one column per quantity (the input, every other pair variable, the
+// rates, every link's world pose, the contact analysis, the residual) and one status per pose. The CLI's
+// --csv writes it (SweepTable::csv()); the Python module (python/) hands the same columns to NumPy, so both
+// give the same names and values by construction.
+//
+//   const io::SweepOutput out{scene, sweep, result, io::sweep_values(sweep)};
+//   const io::SweepTable table = io::sweep_table(out, /*rates=*/false);
+//   std::string text = table.csv();
+#pragma once
+
+#include "rollkin/analysis.hpp"
+#include "rollkin/io/scene.hpp"
+#include "rollkin/io/units.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollkin::io {
+
+/// Outputs give angles in degrees, whatever the scene file's angle unit.
+constexpr AngleUnit kOutputAngle = AngleUnit::Degree;
+
+/// Output units per internal unit of variable `var`: degrees per radian for angles, 1 otherwise (lengths stay
+/// in scene units).
+double output_scale(const Mechanism<double>& m, int var);
+
+/// The contact analysis (docs/analysis.md) of every pose of a sweep, computed once for all the writers;
+/// empty where the pose was not solved.
+using SweepAnalysis = std::vector<std::optional<PoseAnalysis<double>>>;
+SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result);
+
+/// The contact pairs (cam and rolling) in pair order: the order of the analysis columns.
+std::vector<int> contact_pairs(const Mechanism<double>& m);
+
+/// A solved sweep with what the outputs need to present it.
+struct SweepOutput {
+  const Scene& scene;
+  const Sweep& sweep;
+  const SweepResult<double>& result;
+  const std::vector<double>& inputs;        // requested input values in the file's units (one per pose)
+  const SweepAnalysis* analysis = nullptr;  // when set, the analysis columns are added
+};
+
+/// The unit of the input column: degrees for an angle, the scene's length unit for a length, "" otherwise.
+std::string input_column_unit(const SweepOutput& out);
+
+/// The value of the input column of row r (output units: degrees for an angle).
+double input_column(const SweepOutput& out, std::size_t r);
+
+/// Numeric columns (each one value per pose, in the sweep's requested order) and a status per pose.
+struct SweepTable {
+  std::vector<std::string> names;            // numeric columns, in output order
+  std::vector<std::vector<double>> columns;  // columns[c][r]: column c at pose r; NaN where not solved
+  std::string status_name = "status";
+  std::vector<std::string> status;           // "ok", "singular", "dead_point", ... (to_string(SolveStatus))
+
+  std::size_t rows() const { return status.size(); }
+  /// The table as CSV text (io/csv.hpp): header, then one row per pose, the status last.
+  std::string csv() const;
+};
+
+/// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
+/// <link>.x, <link>.y, <link>.angle, (out.analysis) per cam or rolling pair P the columns P.pressure_angle,
+/// P.sliding, P.slide_to_roll, P.kappa1, P.kappa2, P.relative_curvature, per moving link <link>.accel and
+/// <link>.jerk, per unknown v d2(v)/d(input)2 and d3(v)/d(input)3 (docs/analysis.md), residual; then the
+/// status. Angles in degrees, lengths in scene units, rates per input unit. A pose without values (not
+/// solved) has NaN in every numeric column.
+SweepTable sweep_table(const SweepOutput& out, bool rates);
+
+}  // namespace rollkin::io

@@ -1,0 +1,472 @@
+// The Python module `rollkin` (pybind11): scenes loaded from files or built as dicts, overridden by JSON path,
+// solved over a sweep into NumPy columns (the same columns and values as `rollkin solve --csv`, both built by
+// io::sweep_table), and batches of scenes solved on worker threads with the GIL released. API: docs/python.md.
+//
+// Threads: every solve, one scene or many, runs on worker threads; the calling thread waits with the GIL
+// released and, every kPollInterval, takes the GIL to run Python's signal handlers (PyErr_CheckSignals). A
+// Ctrl-C there raises the cancellation flag that sweep() polls between poses (ContinuationSettings::cancel),
+// the workers are joined and KeyboardInterrupt propagates.
+#include "json_access.hpp"  // child(), index(), kind_of() of the scene reader's messages (src/io)
+
+#include "rollkin/io/input_error.hpp"
+#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/scene.hpp"
+#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace py = pybind11;
+using rollkin::InputError;
+using rollkin::io::json;
+
+namespace {
+
+constexpr std::chrono::milliseconds kPollInterval{50};  // how often a waiting solve checks for Ctrl-C
+
+// ---- Python values <-> JSON ------------------------------------------------------------------------------
+
+/// A Python value as JSON (dict, list/tuple, str, int, float, bool, None; NumPy arrays and scalars through
+/// their tolist()). What JSON cannot hold (NaN, infinities, other types, nesting deeper than the scene reader
+/// allows) is an InputError naming `file` and the value's JSON path.
+json to_json(py::handle v, const std::string& path, const std::string& file, std::size_t depth = 1) {
+  if (depth > rollkin::io::kMaxJsonDepth)
+    throw InputError(file, path, "nested deeper than " + std::to_string(rollkin::io::kMaxJsonDepth) + " levels");
+  if (v.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+  if (py::isinstance<py::int_>(v)) {
+    int overflow = 0;
+    const long long i = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+    if (!overflow) return i;
+    return to_json(py::float_(py::reinterpret_borrow<py::object>(v)), path, file, depth);
+  }
+  if (py::isinstance<py::float_>(v)) {
+    const double d = v.cast<double>();
+    if (!std::isfinite(d)) throw InputError(file, path, "the number " + std::string(py::str(v)) + " is not finite; expected a finite number");
+    return d;
+  }
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::isinstance<py::dict>(v)) {
+    json out = json::object();
+    for (auto item : py::reinterpret_borrow<py::dict>(v)) {
+      if (!py::isinstance<py::str>(item.first))
+        throw InputError(file, path, "a key " + std::string(py::repr(item.first)) + " that is not a string; JSON keys are strings");
+      const std::string key = item.first.cast<std::string>();
+      out[key] = to_json(item.second, rollkin::io::child(path, key), file, depth + 1);
+    }
+    return out;
+  }
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    json out = json::array();
+    std::size_t i = 0;
+    for (auto item : v) out.push_back(to_json(item, rollkin::io::index(path, i++), file, depth + 1));
+    return out;
+  }
+  if (py::hasattr(v, "tolist") && py::hasattr(v, "dtype")) return to_json(v.attr("tolist")(), path, file, depth);
+  throw InputError(file, path, "a Python " + std::string(py::str(v.get_type().attr("__name__"))) +
+                                   " cannot be a scene value; expected a dict, list, str, number, bool or None");
+}
+
+/// A JSON value as Python objects (dict, list, str, int, float, bool, None).
+py::object to_python(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return py::none();
+    case json::value_t::boolean: return py::bool_(j.get<bool>());
+    case json::value_t::number_integer: return py::int_(j.get<long long>());
+    case json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+    case json::value_t::number_float: return py::float_(j.get<double>());
+    case json::value_t::string: return py::str(j.get<std::string>());
+    case json::value_t::array: {
+      py::list out;
+      for (const json& e : j) out.append(to_python(e));
+      return std::move(out);
+    }
+    case json::value_t::object: {
+      py::dict out;
+      for (auto it = j.begin(); it != j.end(); ++it) out[py::str(it.key())] = to_python(it.value());
+      return std::move(out);
+    }
+    default: return py::none();
+  }
+}
+
+/// A path given to Python (str or os.PathLike) as text.
+std::string path_text(const py::object& path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
+
+// ---- scenes ----------------------------------------------------------------------------------------------
+
+/// A scene as Python sees it: the built scene and the JSON document it was built from (overrides edit a copy
+/// of the document and build a new scene). Immutable, so batches share it between threads.
+struct PyScene {
+  std::shared_ptr<const rollkin::io::Scene> scene;
+  std::shared_ptr<const json> document;
+  std::string file;  // names the source in messages
+  std::string dir;   // relative contour files are resolved against it
+};
+
+/// `dir` is made absolute ("" is the working directory), so that a scene sent to another process (pickle, e.g.
+/// to dask workers) finds its contour files wherever that process runs.
+PyScene build(json document, const std::string& file, const std::string& dir) {
+  const std::string where = (dir.empty() ? std::filesystem::current_path() : std::filesystem::absolute(dir)).string();
+  auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, where));
+  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where};
+}
+
+/// Pickling: the document as JSON text, the name and the directory; unpickling builds the scene again.
+py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), s.file, s.dir); }
+
+PyScene scene_from_state(const py::tuple& t) {
+  if (t.size() != 3) throw py::value_error("rollkin.Scene: a pickled state is (document, file, dir)");
+  const std::string file = t[1].cast<std::string>();
+  return build(rollkin::io::parse_json_document(t[0].cast<std::string>(), file), file, t[2].cast<std::string>());
+}
+
+PyScene load_scene(const py::object& path) {
+  const std::string file = path_text(path);
+  return build(rollkin::io::read_scene_document(file), file, std::filesystem::path(file).parent_path().string());
+}
+
+PyScene scene_from_dict(const py::dict& document, const py::object& base_dir, const std::string& name) {
+  const std::string dir = base_dir.is_none() ? std::string() : path_text(base_dir);
+  return build(to_json(document, "", name), name, dir);
+}
+
+/// The scene with each (JSON path, value) of `overrides` set in a copy of its document, then built and
+/// checked like a file; messages name the file as "<file> (modified)".
+PyScene modified(const PyScene& s, const py::dict& overrides) {
+  const std::string suffix = " (modified)";
+  const bool already = s.file.size() >= suffix.size() && s.file.compare(s.file.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const std::string file = already ? s.file : s.file + suffix;
+  json document = *s.document;
+  for (auto item : overrides) {
+    if (!py::isinstance<py::str>(item.first))
+      throw py::type_error("modified(): override keys are JSON paths (str) such as \"links[1].contours[0].a\", got " +
+                           std::string(py::repr(item.first)));
+    const std::string path = item.first.cast<std::string>();
+    rollkin::io::set_at_path(document, path, to_json(item.second, path, file), file);
+  }
+  return build(std::move(document), file, s.dir);
+}
+
+py::dict samples(const py::array_t<double, py::array::c_style | py::array::forcecast>& xy, const std::string& name,
+                 const py::kwargs& options) {
+  if (xy.ndim() != 2 || xy.shape(1) != 2)
+    throw py::value_error("samples(): xy must have shape (n, 2) (one row x, y per sample), got " +
+                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(xy.shape(), xy.shape() + xy.ndim()))))));
+  auto a = xy.unchecked<2>();
+  py::list points;
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    if (!std::isfinite(a(i, 0)) || !std::isfinite(a(i, 1)))
+      throw py::value_error("samples(): row " + std::to_string(i) + " of xy is not finite (" +
+                            std::string(py::str(py::float_(a(i, 0)))) + ", " + std::string(py::str(py::float_(a(i, 1)))) + ")");
+    points.append(py::make_tuple(a(i, 0), a(i, 1)));
+  }
+  py::dict contour;
+  contour["name"] = name;
+  contour["type"] = "samples";
+  contour["points"] = points;
+  for (auto item : options) contour[item.first] = item.second;
+  return contour;
+}
+
+// ---- solving ---------------------------------------------------------------------------------------------
+
+/// What to solve: the sweep's overrides (None: the scene's own "sweep") and the extra columns.
+struct Request {
+  std::optional<double> start, stop, step;
+  bool analysis = false, rates = false;
+  double max_steps = 1e7;
+};
+
+/// One scene to solve and, once solved, its table.
+struct Job {
+  std::shared_ptr<const rollkin::io::Scene> scene;
+  rollkin::io::Sweep sweep;
+  std::vector<double> inputs;  // internal units
+  rollkin::SolveReport<double> assembly;
+  rollkin::io::SweepTable table;
+  std::exception_ptr error;
+};
+
+/// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise).
+Job prepare(const PyScene& s, const Request& r) {
+  const rollkin::io::Scene& scene = *s.scene;
+  Job job;
+  job.scene = s.scene;
+  rollkin::io::Sweep& sw = job.sweep;
+  if (scene.sweep) {
+    sw = *scene.sweep;
+  } else {
+    if (!r.start || !r.stop || !r.step)
+      throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
+    sw.input = scene.inputs.front();
+    sw.driver = 0;
+    sw.variable = scene.mechanism.drivers[0];
+    sw.unit = scene.unit_of(sw.variable);
+  }
+  if (r.start) sw.from = *r.start;
+  if (r.stop) sw.to = *r.stop;
+  if (r.step) sw.step = *r.step;
+  const std::string bad = rollkin::io::check_sweep(sw);
+  if (!bad.empty()) throw py::value_error("start/stop/step: " + bad);
+  job.inputs = rollkin::io::sweep_inputs(sw);
+  const double estimate = rollkin::estimate_substeps(scene.mechanism, scene.guess, sw.driver, job.inputs);
+  if (estimate > r.max_steps) {
+    std::ostringstream os;
+    os << scene.file << ": the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
+       << estimate << " continuation sub-steps, above max_steps = " << r.max_steps
+       << "; ask for a smaller range, a larger step, or raise max_steps";
+    throw py::value_error(os.str());
+  }
+  return job;
+}
+
+/// Assembles and sweeps one scene (on a worker thread: no Python here). Exceptions are kept in job.error.
+void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
+  try {
+    const rollkin::io::Scene& scene = *job.scene;
+    const rollkin::Mechanism<double>& m = scene.mechanism;
+    rollkin::SolveData<double> sd(m);
+    rollkin::VectorX<double> q = scene.guess;
+    job.assembly = rollkin::assemble(m, q, sd, scene.held);
+    rollkin::ContinuationSettings<double> cfg;
+    cfg.cancel = &cancel;
+    const rollkin::SweepResult<double> result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
+    if (cancel) return;
+    const std::vector<double> values = rollkin::io::sweep_values(job.sweep);
+    const rollkin::io::SweepAnalysis analysis = r.analysis ? rollkin::io::analyse_sweep(m, result) : rollkin::io::SweepAnalysis{};
+    job.table = rollkin::io::sweep_table({scene, job.sweep, result, values, r.analysis ? &analysis : nullptr}, r.rates);
+  } catch (...) {
+    job.error = std::current_exception();
+  }
+}
+
+/// Solves every job on up to `threads` worker threads (0: one per core) with the GIL released, the calling
+/// thread checking for Ctrl-C every kPollInterval. A signal handler's exception (KeyboardInterrupt) cancels
+/// the workers (between poses), waits for them and propagates.
+void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
+  if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core), got " + std::to_string(threads));
+  std::size_t n = threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  n = std::min(n, jobs.size());
+  if (n == 0) return;
+  std::atomic<bool> cancel{false};
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::condition_variable done;
+  std::size_t finished = 0;  // workers that have returned (under mutex)
+  bool interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    std::vector<std::thread> workers;
+    auto work = [&] {
+      for (std::size_t k; !cancel && (k = next++) < jobs.size();) run(jobs[k], r, cancel);
+      const std::lock_guard<std::mutex> lock(mutex);
+      ++finished;
+      done.notify_all();
+    };
+    try {
+      for (std::size_t i = 0; i < n; ++i) workers.emplace_back(work);
+    } catch (...) {  // no thread could be started: stop those that were, then report
+      cancel = true;
+      for (std::thread& t : workers) t.join();
+      throw;
+    }
+    std::unique_lock<std::mutex> lock(mutex);
+    while (finished < workers.size()) {
+      if (done.wait_for(lock, kPollInterval, [&] { return finished == workers.size(); })) break;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        interrupted = PyErr_CheckSignals() != 0;
+      }
+      lock.lock();
+      if (interrupted) {
+        cancel = true;
+        break;
+      }
+    }
+    lock.unlock();
+    for (std::thread& t : workers) t.join();
+  }
+  if (interrupted) throw py::error_already_set();
+}
+
+/// A solved job as a dict: column name -> float64 array, "status" -> array of str.
+py::dict to_dict(const Job& job) {
+  const rollkin::io::SweepTable& t = job.table;
+  py::dict out;
+  for (std::size_t c = 0; c < t.names.size(); ++c) {
+    py::array_t<double> a(static_cast<py::ssize_t>(t.rows()));
+    if (t.rows()) std::memcpy(a.mutable_data(), t.columns[c].data(), t.rows() * sizeof(double));
+    out[py::str(t.names[c])] = std::move(a);
+  }
+  py::list status;
+  for (const std::string& s : t.status) status.append(s);
+  out[py::str(t.status_name)] = py::module_::import("numpy").attr("array")(status, py::arg("dtype") = "str");
+  return out;
+}
+
+py::dict solve(const PyScene& s, const Request& r) {
+  std::vector<Job> jobs{prepare(s, r)};
+  run_all(jobs, r, 1);
+  if (jobs[0].error) std::rethrow_exception(jobs[0].error);
+  if (jobs[0].assembly.status == rollkin::SolveStatus::CannotAssemble)
+    throw rollkin::io::assembly_error(*s.scene, jobs[0].assembly.detail);
+  return to_dict(jobs[0]);
+}
+
+py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int threads) {
+  std::vector<Job> jobs;
+  for (const PyScene& s : scenes) jobs.push_back(prepare(s, r));
+  run_all(jobs, r, threads);
+  for (const Job& j : jobs)
+    if (j.error) std::rethrow_exception(j.error);
+  py::list out;
+  for (const Job& j : jobs) out.append(to_dict(j));
+  return out;
+}
+
+Request request(std::optional<double> start, std::optional<double> stop, std::optional<double> step, bool analysis,
+                bool rates, double max_steps) {
+  return Request{start, stop, step, analysis, rates, max_steps};
+}
+
+py::object sweep_dict(const PyScene& s) {
+  if (!s.scene->sweep) return py::none();
+  const rollkin::io::Sweep& sw = *s.scene->sweep;
+  py::dict d;
+  d["input"] = sw.input;
+  d["from"] = sw.from;
+  d["to"] = sw.to;
+  d["step"] = sw.step;
+  return std::move(d);
+}
+
+// ---- docstrings ------------------------------------------------------------------------------------------
+
+const char* const kModuleDoc = R"(rollkin: kinematic analysis of planar mechanisms with rolling pairs.
+
+Scenes are the JSON files of the command-line tool (docs/scene_format.md), loaded with load_scene() or given
+as a dict with scene(). Scene.solve() sweeps the input and returns the columns of
+`rollkin solve SCENE --from --to --step --csv` as a dict of NumPy arrays; Scene.modified() overrides values by
+JSON path; solve_many() solves a batch on worker threads with the GIL released (Ctrl-C cancels it).
+Bad input raises rollkin.InputError (a ValueError) with the command-line tool's message. See docs/python.md.
+
+    import rollkin
+    sc = rollkin.load_scene("examples/paper_fourbar.json")
+    t = sc.solve(-50, 100, 1)            # t["B.theta4"], t["status"], ...
+    v = sc.modified({"links[1].contours[0].a": 0.6})
+    ts = rollkin.solve_many([sc, v], -50, 100, 1, threads=0)
+)";
+
+const char* const kSolveDoc = R"(Sweeps the scene's input and returns its table.
+
+start, stop, step: the sweep of the scene's input in the file's units (degrees for an angle in a "deg" scene);
+each None keeps the scene's "sweep" (a scene without one needs all three).
+analysis=True adds the contact analysis columns (as --analysis), rates=True the rate columns (as --rates).
+max_steps bounds the work like the CLI's --max-steps (ValueError above it).
+
+Returns a dict: CSV column name -> numpy float64 array (one value per input value, NaN where the pose was not
+solved), and "status" -> numpy array of str ("ok", "singular", "dead_point", "domain_exit", "corner",
+"no_convergence", "not_reached"); the same columns, in the same order, and the same values as
+`rollkin solve SCENE --from START --to STOP --step STEP --csv`.
+Raises InputError when the mechanism cannot be assembled (the CLI's exit 2), ValueError for a bad sweep.
+The GIL is released while solving; Ctrl-C raises KeyboardInterrupt within about 50 ms of the next pose.)";
+
+const char* const kSolveManyDoc = R"(Solves several scenes over the same sweep, on worker threads.
+
+scenes: a list of Scene; start, stop, step, analysis, rates, max_steps: as Scene.solve (None keeps each
+scene's own "sweep"). threads: the number of worker threads, 0 for one per core.
+Returns a list of dicts, one per scene in order, each as Scene.solve returns it. A scene that cannot be
+assembled does not stop the batch: its dict has NaN values and the status "cannot_assemble" in every row
+(Scene.solve on it alone raises InputError with the reason). The GIL is released while solving; Ctrl-C
+cancels the workers between poses and raises KeyboardInterrupt within a second.)";
+
+}  // namespace
+
+PYBIND11_MODULE(rollkin, m) {
+  m.doc() = kModuleDoc;
+
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  input_error.attr("__doc__") =
+      "Bad input (a scene, a contour file, an override): a ValueError whose message names the file, the location\n"
+      "(JSON path, line) and what is wrong and expected, as the command-line tool prints it. Attributes: file,\n"
+      "location (e.g. the JSON path \"links[1].contours[0].a\"), message.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      py::object error = py::reinterpret_borrow<py::object>(input_error)(e.what());
+      error.attr("file") = e.file();
+      error.attr("location") = e.location();
+      error.attr("message") = e.message();
+      PyErr_SetObject(input_error.ptr(), error.ptr());
+    }
+  });
+
+  py::class_<PyScene>(m, "Scene",
+                      "A scene: a mechanism with its assembly pose and optional sweep, built from a JSON document.\n"
+                      "Create it with load_scene(path) or scene(dict); it never changes (modified() returns a new one).\n"
+                      "Scenes pickle (as their JSON document), so they can be sent to other processes (dask workers).")
+      .def("solve",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              bool analysis, bool rates, double max_steps) {
+             return solve(s, request(start, stop, step, analysis, rates, max_steps));
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = 1e7, kSolveDoc)
+      .def("modified", &modified, py::arg("overrides"),
+           "A new scene with each value of `overrides` ({JSON path: value}, e.g. {\"links[1].contours[0].a\": 0.6})\n"
+           "set in a copy of this scene's document, then checked like a scene file: a path that does not exist or a\n"
+           "bad value raises InputError naming the path. Messages name the file as \"<file> (modified)\"; relative\n"
+           "contour files are still found next to the original file.")
+      .def("document", [](const PyScene& s) { return to_python(*s.document); },
+           "The scene's JSON document as Python objects (dicts, lists, numbers, strings): edit it and pass it to\n"
+           "rollkin.scene() for changes beyond modified().")
+      .def_property_readonly("file", [](const PyScene& s) { return s.file; }, "The source named in messages.")
+      .def_property_readonly("inputs", [](const PyScene& s) { return s.scene->inputs; },
+                             "The full names of the inputs (drivers), e.g. [\"O_A.theta2\"].")
+      .def_property_readonly("sweep", &sweep_dict,
+                             "The scene's own sweep as {\"input\", \"from\", \"to\", \"step\"} (file units), or None.")
+      .def(py::pickle(&scene_state, &scene_from_state))
+      .def("__repr__", [](const PyScene& s) { return "<rollkin.Scene " + s.file + ">"; });
+
+  m.def("load_scene", &load_scene, py::arg("path"),
+        "Reads a scene file (JSON, docs/scene_format.md) and checks it. Raises InputError with the command-line\n"
+        "tool's message (file, JSON path, what is wrong and expected).");
+  m.def("scene", &scene_from_dict, py::arg("document"), py::arg("base_dir") = py::none(), py::arg("name") = "<dict>",
+        "A scene from its JSON document given as a dict (the content of a scene file). Relative contour files are\n"
+        "resolved against base_dir (default: the current directory); `name` names the scene in messages.\n"
+        "Raises InputError naming the JSON path of a bad value (NaN and infinities are not JSON numbers).");
+  m.def("samples", &samples, py::arg("xy"), py::arg("name") = "samples",
+        "A sampled contour (type \"samples\", docs/scene_format.md) from an (n, 2) array of x, y rows, as the dict\n"
+        "a scene's contour list takes; keyword arguments add the contour's other keys (closed, smoothing, scale,\n"
+        "parameter, at, material). xy is read as contiguous float64; a non-finite value raises ValueError.\n"
+        "    contour = rollkin.samples(np.c_[x, y], name=\"profile\", closed=True)");
+  m.def("solve_many",
+        [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
+           std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {
+          return solve_many(scenes, request(start, stop, step, analysis, rates, max_steps), threads);
+        },
+        py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
+        py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
+        py::arg("max_steps") = 1e7, kSolveManyDoc);
+  m.attr("__version__") = ROLLKIN_VERSION;
+}

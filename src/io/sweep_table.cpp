@@ -1,0 +1,170 @@
+// The result table of a solved sweep (rollkin/io/sweep_table.hpp): the CLI's --csv and the Python module's
+// columns.
+#include "rollkin/io/sweep_table.hpp"
+
+#include "rollkin/io/csv.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+namespace rollkin::io {
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* const kContactColumns[] = {"pressure_angle", "sliding", "slide_to_roll", "kappa1", "kappa2", "relative_curvature"};
+const std::size_t kContactColumnCount = sizeof(kContactColumns) / sizeof(kContactColumns[0]);
+
+std::size_t analysis_column_count(const Mechanism<double>& m) {
+  return contact_pairs(m).size() * kContactColumnCount + 2 * (m.links.size() - 1) + 2 * m.unknowns.size();
+}
+
+/// Analysis columns (docs/analysis.md): per contact pair P the P.<quantity> columns, per moving link
+/// <link>.accel and <link>.jerk, per unknown v d2(v)/d(input)2 and d3(v)/d(input)3.
+void analysis_columns(const Mechanism<double>& m, int input, std::vector<std::string>& cols) {
+  for (int k : contact_pairs(m))
+    for (const char* q : kContactColumns) cols.push_back(m.pairs[k].name + "." + q);
+  for (const char* q : {".accel", ".jerk"})
+    for (std::size_t l = 0; l < m.links.size(); ++l)
+      if (static_cast<int>(l) != m.ground) cols.push_back(m.links[l].name + q);
+  for (const char* order : {"2", "3"})
+    for (int i : m.unknowns)
+      cols.push_back(std::string("d") + order + "(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")" + order);
+}
+
+/// The analysis of one pose in output units: pressure angle in degrees, sliding per unit of the input's
+/// output unit (per degree for an angle input, like the rate columns), curvatures in 1/scene unit, angular
+/// accelerations in degrees per input unit squared, jerks per input unit cubed.
+void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, std::vector<double>& row) {
+  const double degrees = from_radians(1.0, kOutputAngle);
+  for (const ContactAnalysis<double>& c : a.contacts) {
+    row.push_back(c.pressure_angle * degrees);
+    row.push_back(c.sliding / in_scale);
+    row.push_back(c.slide_to_roll);
+    row.push_back(c.kappa1);
+    row.push_back(c.kappa2);
+    row.push_back(c.relative_curvature);
+  }
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_acceleration[l] * degrees / (in_scale * in_scale));
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) row.push_back(a.angular_jerk[l] * degrees / (in_scale * in_scale * in_scale));
+  for (int i : m.unknowns) row.push_back(a.qddot(i) * output_scale(m, i) / (in_scale * in_scale));
+  for (int i : m.unknowns) row.push_back(a.qdddot(i) * output_scale(m, i) / (in_scale * in_scale * in_scale));
+}
+
+/// The column names, in output order (see sweep_table).
+std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::vector<int>& others) {
+  const Mechanism<double>& m = out.scene.mechanism;
+  const int input = out.sweep.variable;
+  std::vector<std::string> cols{m.variables[input].name};
+  for (int i = 0; i < m.variable_count(); ++i)
+    if (i != input) {
+      others.push_back(i);
+      cols.push_back(m.variables[i].name);
+    }
+  if (rates)
+    for (int i : m.unknowns) cols.push_back("d(" + m.variables[i].name + ")/d(" + m.variables[input].name + ")");
+  for (const auto& l : m.links) {
+    cols.push_back(l.name + ".x");
+    cols.push_back(l.name + ".y");
+    cols.push_back(l.name + ".angle");
+  }
+  if (out.analysis) analysis_columns(m, input, cols);
+  cols.push_back("residual");
+  return cols;
+}
+
+/// The numeric values of row r, in the order of column_names.
+std::vector<double> row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r,
+                               KinematicsData<double>& kin) {
+  const Mechanism<double>& m = out.scene.mechanism;
+  const double in_scale = output_scale(m, out.sweep.variable);
+  const auto& pose = out.result.poses[r];
+  std::vector<double> row{input_column(out, r)};
+  const bool ok = pose.report.has_pose();  // values also for singular poses
+  for (int i : others) row.push_back(ok ? pose.q(i) * output_scale(m, i) : kNaN);
+  if (rates)
+    for (int i : m.unknowns) row.push_back(ok ? pose.qdot(i) * output_scale(m, i) / in_scale : kNaN);
+  std::vector<SE2<double>> lp;
+  if (ok) {
+    evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);
+    lp = link_poses(m, kin);
+  }
+  for (std::size_t l = 0; l < m.links.size(); ++l) {
+    row.push_back(ok ? lp[l].translation().x() : kNaN);
+    row.push_back(ok ? lp[l].translation().y() : kNaN);
+    row.push_back(ok ? from_radians(lp[l].angle(), kOutputAngle) : kNaN);
+  }
+  if (out.analysis) {
+    if (const auto& a = (*out.analysis)[r]) analysis_values(m, *a, in_scale, row);
+    else row.resize(row.size() + analysis_column_count(m), kNaN);
+  }
+  row.push_back(ok ? pose.report.residual : kNaN);
+  return row;
+}
+
+}  // namespace
+
+double output_scale(const Mechanism<double>& m, int var) {
+  return m.variables[var].kind == ParamKind::Angle ? from_radians(1.0, kOutputAngle) : 1.0;
+}
+
+SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result) {
+  AnalysisData<double> data(m);
+  SweepAnalysis out;
+  out.reserve(result.poses.size());
+  for (const SweepPose<double>& p : result.poses)
+    out.push_back(p.report.has_pose() ? std::optional(analyse_pose(m, p.q, p.qdot, data)) : std::nullopt);
+  return out;
+}
+
+std::vector<int> contact_pairs(const Mechanism<double>& m) {
+  std::vector<int> k;
+  for (std::size_t p = 0; p < m.pairs.size(); ++p)
+    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
+  return k;
+}
+
+std::string input_column_unit(const SweepOutput& out) {
+  switch (out.scene.mechanism.variables[out.sweep.variable].kind) {
+    case ParamKind::Angle: return unit_label(kOutputAngle);
+    case ParamKind::Length: return out.scene.length_unit;
+    case ParamKind::Unitless: return "";
+  }
+  return "";
+}
+
+double input_column(const SweepOutput& out, std::size_t r) {
+  // From the requested values in file units (exact grid values for a "deg" file).
+  const bool radians_file_angle = out.scene.angle_unit != kOutputAngle &&
+                                  out.scene.mechanism.variables[out.sweep.variable].kind == ParamKind::Angle;
+  return radians_file_angle ? from_radians(out.inputs[r], kOutputAngle) : out.inputs[r];
+}
+
+SweepTable sweep_table(const SweepOutput& out, bool rates) {
+  SweepTable t;
+  std::vector<int> others;
+  t.names = column_names(out, rates, others);
+  t.columns.assign(t.names.size(), std::vector<double>(out.result.poses.size()));
+  KinematicsData<double> kin(out.scene.mechanism);
+  for (std::size_t r = 0; r < out.result.poses.size(); ++r) {
+    const std::vector<double> row = row_values(out, rates, others, r, kin);
+    if (row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
+    for (std::size_t c = 0; c < row.size(); ++c) t.columns[c][r] = row[c];
+    t.status.push_back(to_string(out.result.poses[r].report.status));
+  }
+  return t;
+}
+
+std::string SweepTable::csv() const {
+  CsvWriter csv(names, status_name);
+  std::vector<double> row(names.size());
+  for (std::size_t r = 0; r < rows(); ++r) {
+    for (std::size_t c = 0; c < names.size(); ++c) row[c] = columns[c][r];
+    csv.add_row(row, status[r]);
+  }
+  return csv.to_string();
+}
+
+}  // namespace rollkin::io

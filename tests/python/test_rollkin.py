@@ -1,0 +1,450 @@
+"""The Python module rollkin (python/rollkin_module.cpp, docs/python.md) against the command-line tool.
+
+Run by ctest as the test "python": /usr/bin/python3 -m pytest with PYTHONPATH=<build>/python, ROLLKIN_CLI (the
+built tool) and ROLLKIN_SOURCE_DIR set. The independent side of every comparison is a separate process: the
+CLI run on a scene file (`rollkin solve SCENE --from --to --step --csv`), its CSV parsed here by Python's csv
+module, its stderr for the messages.
+"""
+import csv
+import json
+import math
+import os
+import pathlib
+import pickle
+import pydoc
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import rollkin
+
+CLI = os.environ["ROLLKIN_CLI"]
+SRC = pathlib.Path(os.environ["ROLLKIN_SOURCE_DIR"])
+EXAMPLES = sorted((SRC / "examples").glob("*.json"))
+PAPER = SRC / "examples" / "paper_fourbar.json"
+
+
+def cli_csv(scene_file, start, stop, step, tmp_path, *flags):
+    """Runs `rollkin solve` on the file; returns (header, rows) of its CSV and the completed process."""
+    out = tmp_path / ("cli_%d.csv" % time.monotonic_ns())
+    proc = subprocess.run([CLI, "solve", str(scene_file), "--from", repr(start), "--to", repr(stop), "--step", repr(step),
+                           "--csv", str(out), *flags], capture_output=True, text=True)
+    assert proc.returncode in (0, 1), proc.stderr
+    with open(out, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], rows[1:], proc
+
+
+def assert_table_equals_csv(table, header, rows):
+    """Same column names in the same order; every numeric column to 1e-12 (relative to the value's size, NaN
+    where the CSV has nan), the status column exactly."""
+    assert list(table) == header
+    assert all(len(r) == len(header) for r in rows)
+    for j, name in enumerate(header):
+        got = table[name]
+        assert len(got) == len(rows), name
+        if name == "status":
+            assert got.dtype.kind == "U"
+            assert list(got) == [r[j] for r in rows]
+            continue
+        assert got.dtype == np.float64 and got.flags["C_CONTIGUOUS"], name
+        want = np.array([float(r[j]) for r in rows])
+        assert np.array_equal(np.isnan(got), np.isnan(want)), name
+        ok = ~np.isnan(want)
+        assert np.all(np.abs(got[ok] - want[ok]) <= 1e-12 * np.maximum(1.0, np.abs(want[ok]))), name
+
+
+def sweep_of(scene):
+    s = scene.sweep
+    return s["from"], s["to"], s["step"]
+
+
+def assert_tables_equal(a, b):
+    assert list(a) == list(b)
+    for k in a:
+        if k == "status":
+            assert list(a[k]) == list(b[k])
+        else:
+            assert np.array_equal(a[k], b[k], equal_nan=True), k
+
+
+# ---- solve: the CLI's CSV, column by column ----------------------------------------------------------------
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
+def test_solve_equals_cli_csv(example, tmp_path):
+    scene = rollkin.load_scene(example)
+    start, stop, step = sweep_of(scene)
+    header, rows, _ = cli_csv(example, start, stop, step, tmp_path)
+    assert_table_equals_csv(scene.solve(start, stop, step), header, rows)
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
+def test_analysis_and_rates_equal_cli_csv(example, tmp_path):
+    scene = rollkin.load_scene(example)
+    start, stop, step = sweep_of(scene)
+    header, rows, _ = cli_csv(example, start, stop, step, tmp_path, "--analysis", "--rates")
+    assert any(h.endswith(".jerk") for h in header)
+    assert_table_equals_csv(scene.solve(start, stop, step, analysis=True, rates=True), header, rows)
+
+
+def test_solve_with_a_sweep_other_than_the_scenes(tmp_path):
+    scene = rollkin.load_scene(PAPER)
+    header, rows, _ = cli_csv(PAPER, 80, -20, -2.5, tmp_path)
+    table = scene.solve(80, -20, -2.5)
+    assert_table_equals_csv(table, header, rows)
+    assert table["O_A.theta2"][0] == 80 and table["O_A.theta2"][-1] == -20
+    assert_table_equals_csv(scene.solve(), *cli_csv(PAPER, -50, 100, 1, tmp_path)[:2])  # the scene's own sweep
+
+
+def test_a_limit_gives_statuses_and_nan_like_the_cli(tmp_path):
+    # The osculating variant is singular at assembly; the DXF cam runs into no limit. A sweep past the paper
+    # example's range: whatever the CLI reports (statuses, NaN rows), the module reports the same.
+    scene = rollkin.load_scene(PAPER)
+    header, rows, proc = cli_csv(PAPER, -50, 200, 5, tmp_path)
+    table = scene.solve(-50, 200, 5)
+    assert_table_equals_csv(table, header, rows)
+    assert set(table["status"]) - {"ok"}, "expected the sweep to meet a limit beyond 100 deg"
+    assert proc.returncode == 1
+
+
+# ---- modified: overrides by JSON path ------------------------------------------------------------------------
+
+def edited_copy(tmp_path, overrides):
+    """The paper example's file with the overrides written into it (no contour files, so it may move)."""
+    doc = json.loads(PAPER.read_text())
+    for path, value in overrides.items():
+        keys = path.replace("]", "").replace("[", ".").split(".")
+        at = doc
+        for k in keys[:-1]:
+            at = at[int(k)] if isinstance(at, list) else at[k]
+        last = keys[-1]
+        at[int(last) if isinstance(at, list) else last] = value
+    out = tmp_path / "edited.json"
+    out.write_text(json.dumps(doc))
+    return out
+
+
+@pytest.mark.parametrize("overrides", [
+    {"links[1].contours[0].a": 0.6},
+    {"links[1].contours[0].a": 0.45, "pairs[3].at[0].x": 6.8, "links[3].contours[0].radius": 4.1},
+])
+def test_modified_equals_cli_run_of_the_edited_file(overrides, tmp_path):
+    scene = rollkin.load_scene(PAPER)
+    edited = edited_copy(tmp_path, overrides)
+    header, rows, _ = cli_csv(edited, -50, 100, 1, tmp_path, "--analysis")
+    variant = scene.modified(overrides)
+    table = variant.solve(-50, 100, 1, analysis=True)
+    assert_table_equals_csv(table, header, rows)
+    assert not np.array_equal(table["B.theta4"], scene.solve(-50, 100, 1)["B.theta4"])  # the override took effect
+    assert variant.file.endswith("(modified)")
+    assert scene.document()["links"][1]["contours"][0]["a"] == 0.5  # the original is unchanged
+
+
+@pytest.mark.parametrize("path,value,expected", [
+    ("links[9].contours[0].a", 1.0, "no element [9]"),                 # index beyond the array
+    ("links[1].contour[0].a", 1.0, "no key \"contour\""),               # key that does not exist on the way
+    ("links[1].name[0]", "x", "not an array"),                          # a step into a string
+    ("links[1].contours[0].a", "0.6", "expected the coefficient a"),    # wrong type, checked like the file
+    ("links[1].contours[0].a", 0, None),                                # a = 0 is not a parabola
+    ("links[1].contours[0].zz", 1.0, "unknown key \"zz\""),             # a new key the reader does not know
+    ("links[1].contours[0].a", float("nan"), "not finite"),             # not a JSON number
+    ("links[1].contours[0].a", float("inf"), "not finite"),
+    ("links[1].contours[0].a", object(), "cannot be a scene value"),    # not a JSON value
+    ("links..a", 1.0, "not a JSON path"),                               # malformed paths
+    ("links[x].a", 1.0, "not a JSON path"),
+    ("links[1]name", 1.0, "not a JSON path"),
+])
+def test_bad_override_raises_input_error_naming_the_path(path, value, expected):
+    scene = rollkin.load_scene(PAPER)
+    with pytest.raises(rollkin.InputError) as info:
+        scene.modified({path: value})
+    e = info.value
+    assert isinstance(e, ValueError)
+    assert path in str(e) and e.location == path, str(e)
+    assert e.file == str(PAPER) + " (modified)"
+    if expected:
+        assert expected in str(e)
+
+
+def test_override_value_error_message_equals_the_clis_for_the_edited_file(tmp_path):
+    edited = edited_copy(tmp_path, {"pairs[1].values": [0, "x"]})
+    proc = subprocess.run([CLI, "solve", str(edited)], capture_output=True, text=True)
+    assert proc.returncode == 2
+    with pytest.raises(rollkin.InputError) as info:
+        rollkin.load_scene(PAPER).modified({"pairs[1].values": [0, "x"]})
+    e = info.value
+    cli_line = proc.stderr.strip()
+    assert cli_line.startswith(str(edited) + ":")
+    assert cli_line[len(str(edited)):] == str(e)[len(e.file):]  # the same location and message
+
+
+# ---- load_scene: the CLI's messages ---------------------------------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    '{"links": [], "links": []}',                                       # duplicate key (JSON level)
+    '{"links": [{"name": "a", "ground": true}, {"name": "a"}]}',        # duplicate link name (scene level)
+    '{"links": [1, 2',                                                  # malformed JSON
+    '[1, 2]',                                                           # not an object
+])
+def test_load_scene_raises_the_clis_message(text, tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text(text)
+    proc = subprocess.run([CLI, "solve", str(bad)], capture_output=True, text=True)
+    assert proc.returncode == 2
+    with pytest.raises(rollkin.InputError) as info:
+        rollkin.load_scene(bad)
+    assert str(info.value) == proc.stderr.strip()
+    assert isinstance(info.value, ValueError)
+
+
+def test_load_scene_missing_file():
+    with pytest.raises(rollkin.InputError, match="cannot open the scene file"):
+        rollkin.load_scene("/nonexistent/scene.json")
+
+
+def test_cannot_assemble_is_the_clis_input_error(tmp_path):
+    overrides = {"pairs[3].at[0].x": 100}  # disk 4's pivot far away: the loop cannot close
+    edited = edited_copy(tmp_path, overrides)
+    proc = subprocess.run([CLI, "solve", str(edited)], capture_output=True, text=True)
+    assert proc.returncode == 2 and "cannot be assembled" in proc.stderr
+    with pytest.raises(rollkin.InputError) as info:
+        rollkin.load_scene(PAPER).modified(overrides).solve()
+    assert str(info.value)[len(info.value.file):] == proc.stderr.strip()[len(str(edited)):]
+    assert info.value.location == "pairs"
+
+
+def test_bad_sweep_arguments():
+    scene = rollkin.load_scene(PAPER)
+    with pytest.raises(ValueError, match="start/stop/step"):
+        scene.solve(0, 10, -1)
+    with pytest.raises(ValueError, match="max_steps"):
+        scene.solve(-50, 100, 1, max_steps=10)
+    doc = scene.document()
+    del doc["sweep"]
+    with pytest.raises(ValueError, match="no \"sweep\""):
+        rollkin.scene(doc).solve()
+
+
+# ---- scenes as dicts, contours from NumPy -----------------------------------------------------------------
+
+def test_scene_from_its_document_solves_like_the_file():
+    scene = rollkin.load_scene(PAPER)
+    again = rollkin.scene(scene.document(), base_dir=PAPER.parent, name="paper")
+    assert_tables_equal(again.solve(), scene.solve())
+    with pytest.raises(rollkin.InputError) as info:
+        rollkin.scene({"links": "none"}, name="mine")
+    assert info.value.file == "mine" and info.value.location == "links"
+
+
+def test_dict_scene_with_a_samples_contour_equals_the_cli_on_the_same_file(tmp_path):
+    # A cam disk given as samples of an offset circle, lifting a flat follower: built in Python, then written
+    # as JSON for the CLI.
+    doc, scene = sampled_cam_scene()
+    cams = [c for l in doc["links"] for c in l.get("contours", []) if c["type"] == "samples"]
+    assert len(cams) == 1 and len(cams[0]["points"]) == 72
+    written = tmp_path / "cam_samples.json"
+    written.write_text(json.dumps(doc))
+    header, rows, _ = cli_csv(written, 0, 360, 10, tmp_path)
+    table = scene.solve(0, 360, 10)
+    assert_table_equals_csv(table, header, rows)
+    assert np.count_nonzero(table["status"] == "ok") >= 1
+
+
+def test_samples_checks_its_array():
+    with pytest.raises(ValueError, match="shape"):
+        rollkin.samples(np.zeros((5, 3)))
+    with pytest.raises(ValueError, match="row 2"):
+        rollkin.samples(np.array([[0, 0], [1, 0], [np.nan, 1], [0, 1.0]]))
+    c = rollkin.samples(np.asfortranarray(np.arange(8.0).reshape(4, 2)), name="p", smoothing=0.0)
+    assert c["points"] == [(0.0, 1.0), (2.0, 3.0), (4.0, 5.0), (6.0, 7.0)] and c["smoothing"] == 0.0
+
+
+# ---- solve_many ----------------------------------------------------------------------------------------------
+
+def variants():
+    scene = rollkin.load_scene(PAPER)
+    return [scene] + [scene.modified({"links[1].contours[0].a": a}) for a in (0.4, 0.45, 0.55, 0.6, 0.65)]
+
+
+@pytest.mark.parametrize("threads", [0, 1, 2, 3])
+def test_solve_many_equals_solving_each_alone(threads):
+    scenes = variants()
+    alone = [s.solve(-50, 100, 0.5, analysis=True) for s in scenes]
+    together = rollkin.solve_many(scenes, -50, 100, 0.5, threads=threads, analysis=True)
+    assert len(together) == len(scenes)
+    assert rollkin.solve_many([], -50, 100, 1, threads=threads) == []
+    for a, b in zip(alone, together):
+        assert_tables_equal(a, b)
+
+
+def sampled_cam_scene():
+    """The DXF cam example with its cam replaced by samples of an offset circle (a spline contour)."""
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    cam = rollkin.samples(np.c_[2.0 * np.cos(phi) + 0.5, 2.0 * np.sin(phi)], name="profile", closed=True)
+    doc = json.loads((SRC / "examples" / "dxf_cam.json").read_text())
+    for link in doc["links"]:
+        for k, c in enumerate(link.get("contours", [])):
+            if c.get("type") == "dxf":
+                cam.update({key: v for key, v in c.items() if key in ("material", "at")}, name=c["name"])
+                link["contours"][k] = cam
+    doc.pop("units", None)
+    return doc, rollkin.scene(doc)
+
+
+def test_one_scene_shared_by_several_threads_gives_what_it_gives_alone():
+    # Every example and a spline contour, each three times in one batch: the same Scene object is solved by
+    # several threads at once.
+    scenes = [rollkin.load_scene(p) for p in EXAMPLES] + [sampled_cam_scene()[1]]
+    alone = [s.solve() for s in scenes]
+    batch = rollkin.solve_many(scenes * 3, threads=3)
+    for k, table in enumerate(batch):
+        assert_tables_equal(table, alone[k % len(scenes)])
+
+
+def test_a_variant_that_cannot_assemble_does_not_stop_the_batch():
+    scenes = variants()
+    broken = scenes[0].modified({"pairs[3].at[0].x": 100})
+    batch = scenes[:2] + [broken] + scenes[2:]
+    results = rollkin.solve_many(batch, -50, 100, 1, threads=2)
+    assert len(results) == len(batch)
+    bad = results[2]
+    assert list(bad) == list(results[0])  # the same columns
+    assert set(bad["status"]) == {"cannot_assemble"} and len(bad["status"]) == 151
+    assert all(np.isnan(bad[k]).all() for k in bad if k not in ("status", "O_A.theta2"))
+    assert np.array_equal(bad["O_A.theta2"], np.arange(-50.0, 101.0))
+    assert set(results[0]["status"]) == {"ok"}
+    for s, r in zip(batch, results):
+        if s is not broken:
+            assert "cannot_assemble" not in set(r["status"])
+            assert_tables_equal(r, s.solve(-50, 100, 1))
+
+
+def test_solve_many_releases_the_gil():
+    counter = [0]
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counter[0] += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        time.sleep(0.05)
+        before = counter[0]
+        start = time.monotonic()
+        rollkin.solve_many(variants(), -50, 100, 0.01, threads=1)
+        elapsed = time.monotonic() - start
+        during = counter[0] - before
+    finally:
+        stop.set()
+        t.join()
+    assert elapsed > 0.2, "the batch is too short to tell"
+    assert during > 1000, "the counting thread did not run while the batch was solved"
+
+
+def test_ctrl_c_during_a_long_solve_many_returns_within_a_second():
+    scenes = variants()
+    t0 = time.monotonic()
+    scenes[0].solve(-50, 100, 0.002)
+    per_scene = time.monotonic() - t0
+    copies = max(8, int(math.ceil(20.0 / max(per_scene, 1e-3))))  # about 20 s of work on one core
+    batch = (scenes * copies)[:copies]
+    sent = []
+
+    def interrupt():
+        sent.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(0.5, interrupt)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            rollkin.solve_many(batch, -50, 100, 0.002, threads=2)
+        returned = time.monotonic()
+    finally:
+        timer.cancel()
+    assert sent, "the batch ended before the interrupt"
+    assert returned - sent[0] < 1.0, "returned %.3f s after Ctrl-C" % (returned - sent[0])
+    # The module works again afterwards.
+    assert set(scenes[0].solve(-50, 100, 10)["status"]) == {"ok"}
+
+
+def test_ctrl_c_during_a_long_single_solve():
+    scene = rollkin.load_scene(PAPER)
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    sent = time.monotonic() + 0.3
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            scene.solve(-50, 100, 0.0002)  # 750001 poses: about 3 s alone
+        returned = time.monotonic()
+    finally:
+        timer.cancel()
+    assert returned - sent < 1.0
+
+
+# ---- documentation -----------------------------------------------------------------------------------------
+
+def test_help_shows_the_docstrings():
+    text = pydoc.render_doc(rollkin, renderer=pydoc.plaintext)
+    for word in ("load_scene", "solve_many", "modified", "samples", "InputError", "threads", "KeyboardInterrupt",
+                 "JSON path", "analysis"):
+        assert word in text, word
+    assert issubclass(rollkin.InputError, ValueError)
+
+
+# ---- the examples under examples/python -------------------------------------------------------------------
+
+def run_example(name, *args):
+    env = dict(os.environ)
+    return subprocess.run([sys.executable, str(SRC / "examples" / "python" / name), *args], capture_output=True,
+                          text=True, env=env, timeout=300)
+
+
+def test_fit_profile_recovers_the_design():
+    pytest.importorskip("scipy")
+    proc = run_example("fit_profile.py", "--target-a", "0.6", "--target-x", "6.9")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    fitted = re.search(r"fitted a = ([-0-9.e]+), pivot x = ([-0-9.e]+)", proc.stdout)
+    assert abs(float(fitted.group(1)) - 0.6) < 1e-8 and abs(float(fitted.group(2)) - 6.9) < 1e-8, proc.stdout
+
+
+def test_design_study_on_dask_equals_the_same_variants_solved_here(tmp_path):
+    pytest.importorskip("dask.distributed")
+    out = tmp_path / "study.csv"
+    proc = run_example("design_study.py", "--out", str(out), "--grid", "3", "--workers", "1", "--chunk", "4")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    with open(out, newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 9
+    base = rollkin.load_scene(PAPER)
+    for r in rows:
+        a, x = float(r["a"]), float(r["pivot_x"])
+        t = base.modified({"links[1].contours[0].a": a, "pairs[3].at[0].x": x}).solve(analysis=True)
+        ok = t["status"] == "ok"
+        assert int(r["solved"]) == ok.sum() and int(r["poses"]) == len(ok)
+        assert r["first_problem"] == next((s for s in t["status"] if s != "ok"), "")
+        swing = t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
+        assert float(r["swing_deg"]) == swing
+        assert float(r["max_pressure_angle_B_deg"]) == np.nanmax(t["B.pressure_angle"][ok])
+    assert {r["first_problem"] for r in rows} >= {"", "domain_exit"}  # the grid spans both outcomes
+
+
+def test_scenes_pickle_as_their_document(tmp_path):
+    scene = rollkin.load_scene(SRC / "examples" / "dxf_cam.json")  # with a relative contour file
+    variant = scene.modified({"sweep.step": 10})
+    copy = pickle.loads(pickle.dumps(variant))
+    assert copy.file == variant.file and copy.document() == variant.document()
+    cwd = os.getcwd()
+    try:
+        os.chdir(tmp_path)  # elsewhere: the contour file is still found
+        assert_tables_equal(pickle.loads(pickle.dumps(variant)).solve(), variant.solve())
+    finally:
+        os.chdir(cwd)
