@@ -247,6 +247,10 @@ BOOST_AUTO_TEST_CASE(a_chord_tiny_against_the_radii_keeps_the_ellipse) {
   const V large = extent(parse("M0 0 A-300 45 0 1 1 0 1.1e-299")[0].segments);
   BOOST_TEST(std::abs(large.x() - 600) < 1e-9 * 600);
   BOOST_TEST(std::abs(large.y() - 90) < 1e-9 * 90);
+  // Radii 10 and 1e-310 (a subnormal): the direction to the centre overflows; the chord is left.
+  for (const auto& sub : parse("M0 0 A10 1e-310 45 1 1 0 1e-310"))
+    for (const auto& seg : sub.segments)
+      for (const V& p : seg.points) BOOST_TEST((std::isfinite(p.x()) && std::isfinite(p.y())));
   // The small arc is as degenerate as the straight line over the same chord, and read like it.
   BOOST_TEST(parse("M0 0 A300 45 0 0 1 0 1.1e-299").size() == parse("M0 0 L0 1.1e-299").size());
 }

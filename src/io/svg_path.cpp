@@ -62,6 +62,9 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   const double d = std::max(std::abs(x1), std::abs(y1));
   if (d == 0) return {Segment{{a.from, a.to}, {}}};  // the half chord underflows: no arc to speak of
   const double ud = x1 / d / rx, vd = y1 / d / ry, md = std::hypot(ud, vd);
+  // Radii so far from the chord, or from each other, that these overflow (fuzz_svg: radii 10 and 1e-310)
+  // leave, like F.6.6, the chord.
+  if (!(std::isfinite(md) && md > 0)) return {Segment{{a.from, a.to}, {}}};
   const double m = md * d;
   double root = lambda >= 1 ? 0.0 : std::sqrt(std::max(0.0, 1 - m * m));
   if (a.large_arc == a.sweep) root = -root;
