@@ -210,20 +210,10 @@ Job prepare(const PyScene& s, const Request& r) {
   const rollkin::io::Scene& scene = *s.scene;
   Job job;
   job.scene = s.scene;
+  const std::optional<rollkin::io::Sweep> requested = rollkin::io::requested_sweep(scene, r.start, r.stop, r.step);
+  if (!requested) throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
   rollkin::io::Sweep& sw = job.sweep;
-  if (scene.sweep) {
-    sw = *scene.sweep;
-  } else {
-    if (!r.start || !r.stop || !r.step)
-      throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
-    sw.input = scene.inputs.front();
-    sw.driver = 0;
-    sw.variable = scene.mechanism.drivers[0];
-    sw.unit = scene.unit_of(sw.variable);
-  }
-  if (r.start) sw.from = *r.start;
-  if (r.stop) sw.to = *r.stop;
-  if (r.step) sw.step = *r.step;
+  sw = *requested;
   const std::string bad = rollkin::io::check_sweep(sw);
   if (!bad.empty()) throw py::value_error("start/stop/step: " + bad);
   job.inputs = rollkin::io::sweep_inputs(sw);

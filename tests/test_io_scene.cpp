@@ -418,3 +418,30 @@ BOOST_AUTO_TEST_CASE(build_scene_checks_a_document_like_a_file) {
   BOOST_TEST(a.guess == b.guess);
   BOOST_TEST(a.mechanism.contours[0].jet(0.3, 2).p == b.mechanism.contours[0].jet(0.3, 2).p);
 }
+
+BOOST_AUTO_TEST_CASE(requested_sweep_is_the_scenes_with_the_values_given) {
+  const Scene paper = load_scene(kExamples + "paper_fourbar.json");  // sweep O_A.theta2 from -50 to 100 step 1
+  const auto same = rollkin::io::requested_sweep(paper, std::nullopt, std::nullopt, std::nullopt);
+  BOOST_REQUIRE(same.has_value());
+  BOOST_TEST(same->input == "O_A.theta2");
+  BOOST_TEST(same->from == -50.0);
+  BOOST_TEST(same->to == 100.0);
+  BOOST_TEST(same->step == 1.0);
+  const auto moved = rollkin::io::requested_sweep(paper, 10.0, std::nullopt, 0.5);
+  BOOST_TEST(moved->from == 10.0);
+  BOOST_TEST(moved->to == 100.0);
+  BOOST_TEST(moved->step == 0.5);
+  BOOST_TEST(moved->variable == same->variable);
+  // Without a "sweep", the first input is swept, and only when all three values are given.
+  const Scene bare = load_scene(write_temp("no_sweep.json",
+                                           paper_with(",\n  \"sweep\": {\"input\": \"O_A.theta2\", \"from\": -50, \"to\": 100, \"step\": 1}", "")));
+  BOOST_REQUIRE(!bare.sweep.has_value());
+  BOOST_TEST(!rollkin::io::requested_sweep(bare, 0.0, 10.0, std::nullopt).has_value());
+  const auto given = rollkin::io::requested_sweep(bare, 0.0, 10.0, 2.0);
+  BOOST_REQUIRE(given.has_value());
+  BOOST_TEST(given->input == "O_A.theta2");
+  BOOST_TEST(given->variable == bare.mechanism.drivers[0]);
+  BOOST_TEST(std::abs(given->unit - std::acos(-1.0) / 180) <= 1e-16);
+  BOOST_TEST(given->from == 0.0);
+  BOOST_TEST(given->to == 10.0);
+}

@@ -145,23 +145,11 @@ void add_sweep_options(CLI::App& app, SweepRequest& r) {
 
 /// The sweep to run: the scene's, with the command line's overrides.
 io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
-  io::Sweep s;
-  if (scene.sweep) {
-    s = *scene.sweep;
-  } else {
-    if (!r.from || !r.to || !r.step)
-      throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
-    s.input = scene.inputs.front();
-    s.driver = 0;
-    s.variable = scene.mechanism.drivers[0];
-    s.unit = scene.unit_of(s.variable);
-  }
-  if (r.from) s.from = *r.from;
-  if (r.to) s.to = *r.to;
-  if (r.step) s.step = *r.step;
-  const std::string bad = io::check_sweep(s);
+  const std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
+  if (!s) throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
+  const std::string bad = io::check_sweep(*s);
   if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
-  return s;
+  return *s;
 }
 
 /// Bounded work: refuses before solving a request whose estimated continuation sub-steps exceed --max-steps.

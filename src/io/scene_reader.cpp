@@ -362,6 +362,24 @@ std::string Scene::unit_label(int variable) const {
   return "";
 }
 
+std::optional<Sweep> requested_sweep(const Scene& scene, std::optional<double> from, std::optional<double> to,
+                                     std::optional<double> step) {
+  Sweep s;
+  if (scene.sweep) {
+    s = *scene.sweep;
+  } else {
+    if (!from || !to || !step) return std::nullopt;
+    s.input = scene.inputs.front();
+    s.driver = 0;
+    s.variable = scene.mechanism.drivers[0];
+    s.unit = scene.unit_of(s.variable);
+  }
+  if (from) s.from = *from;
+  if (to) s.to = *to;
+  if (step) s.step = *step;
+  return s;
+}
+
 InputError assembly_error(const Scene& scene, const std::string& detail) {
   return InputError(scene.file, "pairs",
                     "the mechanism cannot be assembled: " + detail +

@@ -58,6 +58,12 @@ Scene load_scene(const std::string& path);
 /// (they are resolved against its directory).
 Scene parse_scene(const std::string& text, const std::string& file);
 
+/// The sweep a run asks for: the scene's "sweep" with `from`, `to`, `step` replaced where given (file units).
+/// A scene without a "sweep" sweeps its first input and then needs all three: nullopt when one is missing
+/// (the caller names its own options in the message). check_sweep() says whether the numbers are fine.
+std::optional<Sweep> requested_sweep(const Scene& scene, std::optional<double> from, std::optional<double> to,
+                                     std::optional<double> step);
+
 /// The error for a scene whose mechanism cannot be assembled (SolveStatus::CannotAssemble, `detail` from the
 /// assembly's report): a problem of the scene (sizes, frames, values), not a motion limit; named at "pairs".
 InputError assembly_error(const Scene& scene, const std::string& detail);
