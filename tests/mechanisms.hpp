@@ -108,22 +108,30 @@ template <class S> Fixture<S> disk_on_line(const S& r) {
   return f;
 }
 
+/// Four-bar with pivots O2 = (0, 0) and O4 = (o4, 0): crank pin A at `a` in the crank's frame, pin B at
+/// `b_coupler` in the coupler's frame (whose origin is A) and at `b_follower` in the follower's frame (origin
+/// O4). Links frame, crank, coupler and `follower`; variables theta2 (input), theta3 (coupler on crank),
+/// theta_b (follower on coupler), theta4. The caller sets the assembly guess.
+template <class S> Fixture<S> four_bar(const Vec2<S>& a, const Vec2<S>& b_coupler, const Vec2<S>& b_follower, const S& o4,
+                                       const std::string& follower = "follower") {
+  MechanismBuilder<S> b;
+  const int frame = b.link("frame", true), crank = b.link("crank"), coupler = b.link("coupler"), out = b.link(follower);
+  const int o2 = b.revolute("O2", frame, crank, SE2<S>(), SE2<S>(), "theta2");
+  b.revolute("A", crank, coupler, SE2<S>(S(0), a), SE2<S>(), "theta3");
+  b.revolute("B", coupler, out, SE2<S>(S(0), b_coupler), SE2<S>(S(0), b_follower), "theta_b");
+  b.revolute("O4", frame, out, SE2<S>(S(0), Vec2<S>(o4, S(0))), SE2<S>(), "theta4");
+  b.driver(o2);
+  return Fixture<S>{b.build(), VectorX<S>(4), {}};
+}
+
 /// Crossed four-bar (anti-parallelogram, examples/antiparallelogram.json): frame 4 (pivots O2 = (0, 0),
 /// O4 = (4, 0)), coupler 4, cranks 2; the crank's pin at 90 deg in its frame ((0, 2)), the follower's at 0 deg
 /// ((2, 0)). Variables: theta2 (input), theta3 (coupler on crank), theta_b (follower on coupler), theta4.
 /// Assembled at theta2 = 0 on the crossed branch (pin B at (2.4, -1.2), theta4 = -143.13 deg); at theta2 = 90
 /// and 270 deg the joints are in line and the parallelogram branch (theta4 = theta2 + 90) crosses it.
 template <class S> Fixture<S> antiparallelogram() {
-  MechanismBuilder<S> b;
-  const int frame = b.link("frame", true), crank = b.link("crank"), coupler = b.link("coupler"),
-            follower = b.link("follower");
-  const int o2 = b.revolute("O2", frame, crank, SE2<S>(), SE2<S>(), "theta2");
-  b.revolute("A", crank, coupler, SE2<S>(S(0), Vec2<S>(S(0), S(2))), SE2<S>(), "theta3");
-  b.revolute("B", coupler, follower, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(S(0), Vec2<S>(S(2), S(0))), "theta_b");
-  b.revolute("O4", frame, follower, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(), "theta4");
-  b.driver(o2);
-  Fixture<S> f{b.build(), VectorX<S>(4), {}};
   const S deg = pi<S>() / S(180);
+  Fixture<S> f = four_bar<S>(Vec2<S>(S(0), S(2)), Vec2<S>(S(4), S(0)), Vec2<S>(S(2), S(0)), S(4));
   f.guess << S(0), S(-53) * deg, S(-90) * deg, S(-143) * deg;
   return f;
 }

@@ -37,14 +37,7 @@ std::vector<double> inputs_deg(double from, double to, double step) {
 /// The parallelogram (frame 4, cranks 2, coupler 4 between the crank pins): its coupler keeps its
 /// orientation, a pure translation relative to the frame. Assembled at theta2 = 0.3 rad.
 Fixture<double> parallelogram() {
-  MechanismBuilder<double> b;
-  const int frame = b.link("frame", true), crank = b.link("crank"), coupler = b.link("coupler"), rocker = b.link("rocker");
-  const int o2 = b.revolute("O2", frame, crank, SE2<double>(), SE2<double>(), "theta2");
-  b.revolute("A", crank, coupler, SE2<double>(0, Vec2<double>(2, 0)), SE2<double>(), "theta3");
-  b.revolute("B", coupler, rocker, SE2<double>(0, Vec2<double>(4, 0)), SE2<double>(0, Vec2<double>(2, 0)), "theta_b");
-  b.revolute("O4", frame, rocker, SE2<double>(0, Vec2<double>(4, 0)), SE2<double>(), "theta4");
-  b.driver(o2);
-  Fixture<double> f{b.build(), VectorX<double>(4), {}};
+  Fixture<double> f = four_bar<double>(Vec2<double>(2, 0), Vec2<double>(4, 0), Vec2<double>(2, 0), 4, "rocker");
   f.guess << 0.3, -0.3, 0.3, 0.3;
   return f;
 }
@@ -126,14 +119,7 @@ double rolled_back_error(const Fixture<double>& f, const SweepResult<double>& li
 /// rocker's motion relative to the crank is finite. Variables as antiparallelogram(): theta2, theta3, theta_b,
 /// theta4. Assembled at theta2 = 0 (B at (3.489, 2.956)).
 Fixture<double> crank_rocker() {
-  MechanismBuilder<double> b;
-  const int frame = b.link("frame", true), crank = b.link("crank"), coupler = b.link("coupler"), follower = b.link("follower");
-  const int o2 = b.revolute("O2", frame, crank, SE2<double>(), SE2<double>(), "theta2");
-  b.revolute("A", crank, coupler, SE2<double>(0, Vec2<double>(0, 1)), SE2<double>(), "theta3");
-  b.revolute("B", coupler, follower, SE2<double>(0, Vec2<double>(4, 0)), SE2<double>(0, Vec2<double>(3, 0)), "theta_b");
-  b.revolute("O4", frame, follower, SE2<double>(0, Vec2<double>(4, 0)), SE2<double>(), "theta4");
-  b.driver(o2);
-  Fixture<double> f{b.build(), VectorX<double>(4), {}};
+  Fixture<double> f = four_bar<double>(Vec2<double>(0, 1), Vec2<double>(4, 0), Vec2<double>(3, 0), 4);
   f.guess << 0, 29.28 * kDeg, 70.53 * kDeg, 99.81 * kDeg;
   return f;
 }
