@@ -168,7 +168,7 @@ template <class S> std::pair<S, S> four_bar_angles(const FourBar& g, const S& t)
 /// Frame (ground) A at the origin, D at (frame, 0); crank A -> B, coupler B -> C, rocker D -> C, each
 /// link's x axis along its bar. Variables: theta2 (input), theta3 (coupler - crank), theta34 (rocker -
 /// coupler), theta4 (rocker).
-Case four_bar(Rng& rng) {
+Case crank_rocker(Rng& rng) {
   const FourBar g = random_crank_rocker(rng);
   const double s = random_scale(rng);
   MechanismBuilder<double> b;
@@ -283,7 +283,7 @@ template <class Draw> void run_family(std::uint64_t seed, Draw draw) {
 
 BOOST_AUTO_TEST_CASE(random_gear_trains_double_agrees_with_mpfr) { run_family(20261123, gear_train); }
 
-BOOST_AUTO_TEST_CASE(random_crank_rockers_double_agrees_with_mpfr) { run_family(20261124, four_bar); }
+BOOST_AUTO_TEST_CASE(random_crank_rockers_double_agrees_with_mpfr) { run_family(20261124, crank_rocker); }
 
 BOOST_AUTO_TEST_CASE(random_cam_pairs_double_agrees_with_mpfr) { run_family(20261125, cam_pair); }
 
