@@ -191,6 +191,12 @@ struct SweepRun {
     if (it != given_.end()) outputs.set(it->second, make_text());
   }
 
+  /// The same for an output streamed into its file at commit (io::OutputSet::set_writer).
+  void stream_output(const std::string& option, std::function<void(io::OutputSink&)> write) {
+    const auto it = given_.find(option);
+    if (it != given_.end()) outputs.set_writer(it->second, std::move(write));
+  }
+
  private:
   std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
 
@@ -517,7 +523,7 @@ int run_solve(const SolveOptions& o) {
   const std::vector<double> file_values = io::sweep_values(sw);
   const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, result) : cli::SweepAnalysis{};
   const cli::OutputContext ctx{scene, sw, result, file_values, o.analysis ? &analysis : nullptr};
-  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
+  run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
   run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
   run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
   run.set_output("--animate", [&] { return cli::animation_html(ctx); });
