@@ -600,16 +600,8 @@ int run_reference(const ReferenceOptions& o) {
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
   const Mechanism<double>& m = scene.mechanism;
-  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
-  ReferenceSweep ref;
   g_doing = "computing the reference sweep in MPFR";
-  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
-    std::vector<std::string> values;
-    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
-    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
-  } else {
-    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, run.inputs, o.digits);
-  }
+  const ReferenceSweep ref = io::scene_reference(scene, sw, o.digits);
   g_doing = "writing the output file";
   run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
   run.outputs.commit();
