@@ -392,6 +392,22 @@ void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
   if (interrupted) throw py::error_already_set();
 }
 
+/// Texts as a NumPy array of str (dtype <U width of the longest), its UCS-4 buffer filled here: no Python
+/// string per row.
+template <class Texts> py::array str_array(const Texts& texts) {
+  std::size_t width = 1;
+  for (const std::string& t : texts) width = std::max(width, t.size());
+  py::array out = py::module_::import("numpy").attr("empty")(std::size(texts), py::arg("dtype") = "<U" + std::to_string(width));
+  auto* chars = static_cast<char32_t*>(out.mutable_data());
+  std::fill(chars, chars + std::size(texts) * width, U'\0');
+  std::size_t row = 0;
+  for (const std::string& t : texts) {
+    for (std::size_t i = 0; i < t.size(); ++i) chars[row * width + i] = static_cast<unsigned char>(t[i]);
+    ++row;
+  }
+  return out;
+}
+
 /// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
 /// assembled also "error": the InputError message Scene.solve would raise for it.
 py::dict to_dict(const Job& job) {
@@ -402,9 +418,7 @@ py::dict to_dict(const Job& job) {
     if (t.rows()) std::memcpy(a.mutable_data(), t.columns[c].data(), t.rows() * sizeof(double));
     out[py::str(t.names[c])] = std::move(a);
   }
-  py::list status;
-  for (const std::string& s : t.status) status.append(s);
-  out[py::str(t.status_name)] = py::module_::import("numpy").attr("array")(status, py::arg("dtype") = "str");
+  out[py::str(t.status_name)] = str_array(t.status);
   if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
     out["error"] = rollkin::io::assembly_error(*job.scene, job.assembly.detail).what();
   return out;
@@ -537,9 +551,9 @@ py::dict reference(const PyScene& s, const Request& r, int digits) {
       out[py::str(ref.variables[static_cast<std::size_t>(i)])] =
           column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.q[static_cast<std::size_t>(i)]); });
   out["residual"] = column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.residual); });
-  py::list status;
-  for (const auto& p : ref.poses) status.append(rollkin::to_string(p.status));
-  out["status"] = py::module_::import("numpy").attr("array")(status, py::arg("dtype") = "str");
+  std::vector<std::string> status;
+  for (const auto& p : ref.poses) status.emplace_back(rollkin::to_string(p.status));
+  out["status"] = str_array(status);
   return out;
 }
 
@@ -746,5 +760,21 @@ PYBIND11_MODULE(rollkin, m) {
         py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
         py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
         py::arg("max_steps") = 1e7, kSolveManyDoc);
+  m.def("_sweep_seconds",
+        [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
+          // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
+          // table and no NumPy, for the overhead of Python and dask per variant against it.
+          Job job = prepare(s, request(start, stop, step, false, false, 1e7));
+          py::gil_scoped_release nogil;
+          const auto t0 = std::chrono::steady_clock::now();
+          const rollkin::Mechanism<double>& m = job.scene->mechanism;
+          rollkin::SolveData<double> sd(m);
+          rollkin::VectorX<double> q = job.scene->guess;
+          const auto assembly = rollkin::assemble(m, q, sd, job.scene->held);
+          [[maybe_unused]] const auto result = rollkin::sweep(m, sd, q, assembly, job.sweep.driver, job.inputs);
+          const std::chrono::duration<double> t = std::chrono::steady_clock::now() - t0;
+          return t.count();
+        },
+        py::arg("scene"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none());
   m.attr("__version__") = ROLLKIN_VERSION;
 }

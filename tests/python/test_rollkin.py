@@ -429,23 +429,43 @@ def test_fit_profile_recovers_the_design():
 
 def test_design_study_on_dask_equals_the_same_variants_solved_here(tmp_path):
     pytest.importorskip("dask.distributed")
-    out = tmp_path / "study.csv"
-    proc = run_example("design_study.py", "--out", str(out), "--grid", "3", "--workers", "1", "--chunk", "4")
+    out = tmp_path / "study"
+    proc = run_example("design_study.py", "--variants", "27", "--design", "grid", "--workers", "1", "--out", str(out))
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    with open(out, newline="") as f:
+    with open(out / "results.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    assert len(rows) == 9
+    assert len(rows) == 27 and (out / "study.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     base = rollkin.load_scene(PAPER)
     for r in rows:
-        a, x = float(r["a"]), float(r["pivot_x"])
-        t = base.modified({"links[1].contours[0].a": a, "pairs[3].at[0].x": x}).solve(analysis=True)
+        t = base.modified({"links[1].contours[0].a": float(r["a"]), "links[2].contours[0].radius": float(r["radius3"]),
+                           "pairs[3].at[0].x": float(r["pivot_x"])}).solve(analysis=True)
         ok = t["status"] == "ok"
         assert int(r["solved"]) == ok.sum() and int(r["poses"]) == len(ok)
         assert r["first_problem"] == next((s for s in t["status"] if s != "ok"), "")
-        swing = t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
-        assert float(r["swing_deg"]) == swing
+        assert float(r["swing_deg"]) == t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
         assert float(r["max_pressure_angle_B_deg"]) == np.nanmax(t["B.pressure_angle"][ok])
+        assert float(r["worst_residual"]) == t["residual"][ok].max()
+        first_break = len(ok) if ok.all() else int(np.argmin(ok))
+        assert float(r["reached_to_deg"]) == t["O_A.theta2"][first_break - 1]
     assert {r["first_problem"] for r in rows} >= {"", "domain_exit"}  # the grid spans both outcomes
+    assert len({(r["a"], r["radius3"], r["pivot_x"]) for r in rows}) == 27
+    # A file where the directory should be: refused, the file untouched.
+    blocker = tmp_path / "file"
+    blocker.write_text("mine")
+    proc = run_example("design_study.py", "--variants", "2", "--workers", "1", "--out", str(blocker))
+    assert proc.returncode == 2 and "is a file" in proc.stderr and blocker.read_text() == "mine"
+
+
+def test_latin_hypercube_has_one_point_in_every_slice():
+    sys.path.insert(0, str(SRC / "examples" / "python"))
+    try:
+        import design_study
+    finally:
+        sys.path.pop(0)
+    points = design_study.design("lhs", 50, seed=3)
+    assert points.shape == (50, 3)
+    for axis in points.T:  # each of the 50 slices of [0, 1) holds exactly one point
+        assert sorted(np.floor(axis * 50).astype(int)) == list(range(50))
 
 
 def test_scenes_pickle_as_their_document(tmp_path):
