@@ -456,6 +456,37 @@ def test_design_study_on_dask_equals_the_same_variants_solved_here(tmp_path):
     assert proc.returncode == 2 and "is a file" in proc.stderr and blocker.read_text() == "mine"
 
 
+def test_design_study_on_a_running_cluster_by_its_address(tmp_path):
+    # A scheduler and a worker started as separate processes, as on a cluster (docs/python.md); the study is
+    # given only the scheduler's address and must give what the LocalCluster run gives.
+    pytest.importorskip("dask.distributed")
+    info = tmp_path / "scheduler.json"
+    common = ["--no-dashboard"]
+    scheduler = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1",
+                                  "--port", "0", "--scheduler-file", str(info), *common],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    worker = None
+    try:
+        deadline = time.monotonic() + 60
+        while not info.exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
+        address = json.loads(info.read_text())["address"]
+        worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address, "--nthreads", "1",
+                                   *common], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=dict(os.environ))
+        remote = run_example("design_study.py", "--variants", "12", "--out", str(tmp_path / "remote"), "--scheduler",
+                             address)
+        assert remote.returncode == 0, remote.stdout + remote.stderr
+    finally:
+        for p in (worker, scheduler):
+            if p is not None:
+                p.terminate()
+                p.wait(timeout=30)
+    local = run_example("design_study.py", "--variants", "12", "--workers", "1", "--out", str(tmp_path / "local"))
+    assert local.returncode == 0, local.stdout + local.stderr
+    assert (tmp_path / "remote" / "results.csv").read_text() == (tmp_path / "local" / "results.csv").read_text()
+    assert len((tmp_path / "remote" / "results.csv").read_text().splitlines()) == 13
+
+
 def test_latin_hypercube_has_one_point_in_every_slice():
     sys.path.insert(0, str(SRC / "examples" / "python"))
     try:
