@@ -313,8 +313,9 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
   return out;
 }
 
-/// --interference: contours sampled in world coordinates at every solved pose (solve/interference.hpp); one
-/// line per run of consecutive poses with the same finding, inputs in the file's units.
+/// --interference: contours sampled once in their links' frames and checked at every solved pose
+/// (solve/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
+/// file's units, with the chords' distance from the curves and the touch tolerance.
 std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
   const SweepInterference si = check_interference(m, result);
@@ -340,7 +341,9 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
   for (const auto& r : runs)
     lines.push_back(std::string("interference: ") + to_string(r.kind) + " between '" + m.contours[r.a].name() +
                     "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
-                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit));
+                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit) + " (decided on chords within " +
+                    fmt(std::max(si.chord_error[r.a], si.chord_error[r.b]), 2) + " " + scene.length_unit +
+                    " of the contours, touch tolerance " + fmt(si.touch_tolerance, 2) + " " + scene.length_unit + ")");
   return lines;
 }
 
