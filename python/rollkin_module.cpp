@@ -20,6 +20,7 @@
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/io/sweep_table.hpp"
+#include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <pybind11/numpy.h>
@@ -30,7 +31,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -38,11 +38,9 @@
 #include <limits>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace py = pybind11;
@@ -342,52 +340,22 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
   }
 }
 
-/// Solves every job on up to `threads` worker threads (0: one per core) with the GIL released, the calling
-/// thread checking for Ctrl-C every kPollInterval. A signal handler's exception (KeyboardInterrupt) cancels
-/// the workers (between poses), waits for them and propagates.
+/// Solves every job on up to `threads` worker threads (0: one per core; rollkin::run_batch) with the GIL
+/// released, the calling thread checking for Ctrl-C every kPollInterval. A signal handler's exception
+/// (KeyboardInterrupt) cancels the workers (between poses), waits for them and propagates.
 void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
   if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core), got " + std::to_string(threads));
-  std::size_t n = threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
-  n = std::min(n, jobs.size());
-  if (n == 0) return;
-  std::atomic<bool> cancel{false};
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::condition_variable done;
-  std::size_t finished = 0;  // workers that have returned (under mutex)
   bool interrupted = false;
   {
     py::gil_scoped_release nogil;
-    std::vector<std::thread> workers;
-    auto work = [&] {
-      for (std::size_t k; !cancel && (k = next++) < jobs.size();) run(jobs[k], r, cancel);
-      const std::lock_guard<std::mutex> lock(mutex);
-      ++finished;
-      done.notify_all();
-    };
-    try {
-      for (std::size_t i = 0; i < n; ++i) workers.emplace_back(work);
-    } catch (...) {  // no thread could be started: stop those that were, then report
-      cancel = true;
-      for (std::thread& t : workers) t.join();
-      throw;
-    }
-    std::unique_lock<std::mutex> lock(mutex);
-    while (finished < workers.size()) {
-      if (done.wait_for(lock, kPollInterval, [&] { return finished == workers.size(); })) break;
-      lock.unlock();
-      {
-        py::gil_scoped_acquire gil;
-        interrupted = PyErr_CheckSignals() != 0;
-      }
-      lock.lock();
-      if (interrupted) {
-        cancel = true;
-        break;
-      }
-    }
-    lock.unlock();
-    for (std::thread& t : workers) t.join();
+    rollkin::run_batch(
+        jobs.size(), threads, [&](std::size_t k, const std::atomic<bool>& cancel) { run(jobs[k], r, cancel); },
+        [&] {
+          py::gil_scoped_acquire gil;
+          interrupted = PyErr_CheckSignals() != 0;
+          return interrupted;
+        },
+        kPollInterval);
   }
   if (interrupted) throw py::error_already_set();
 }
