@@ -1,14 +1,19 @@
 #!/usr/bin/python3
 """Timings of the Python module rollkin (rows of docs/benchmark.md, "Python module").
 
-    PYTHONPATH=build/python /usr/bin/python3 bench/python_bench.py [--repeat 7]
+    PYTHONPATH=build/python /usr/bin/python3 bench/python_bench.py [--repeat 7] [--variants 2000]
 
-Prints one Markdown table row per case, each the median (min-max) of --repeat readings of wall time:
+Prints Markdown table rows, each the median (min-max) of --repeat readings of wall time:
   - load_scene of the paper example, and Scene.modified (copy the document, set one value, build and check);
   - Scene.solve of the paper example in 1-degree and in 0.01-degree steps, per pose, everything included
     (worker thread, sweep, table, NumPy arrays), and the same with analysis=True;
-  - solve_many of 16 variants on 1 thread and on 2, and the ratio of the two (the machine's other load
-    shows here: the load average is printed).
+  - a design-study batch: --variants variants of the paper example (151 poses each) as variants per second,
+    through the bare C++ loop (assembly and sweep, no table: rollkin._sweep_seconds), solve_many on one
+    thread, solve_many on all cores (with the speed-up against one thread and its ratio to the number of
+    cores), and dask.distributed with 2 local worker processes (cluster start excluded); then the overhead
+    per variant of Python and of dask against the C++ loop.
+The load average before and after, and the process's CPU time over wall time on all cores, show how much of
+the machine was free: on a shared machine the all-cores speed-up is bounded by the idle cores.
 """
 import argparse
 import os
@@ -19,6 +24,7 @@ import time
 import rollkin
 
 SCENE = pathlib.Path(__file__).resolve().parent.parent / "examples" / "paper_fourbar.json"
+SWEEP = (-50, 100, 1)  # the scene's own sweep: 151 poses
 
 
 def readings(f, repeat):
@@ -35,12 +41,39 @@ def row(case, values, unit, scale):
     print("| %s | %.3g (%.3g-%.3g) %s |" % (case, statistics.median(v), min(v), max(v), unit))
 
 
+def rate_row(case, seconds, n):
+    """Variants per second: n / each reading (the median of the rates is n / the median time)."""
+    v = sorted(n / s for s in seconds)
+    print("| %s | %.0f (%.0f-%.0f) variants/s |" % (case, statistics.median(v), v[0], v[-1]))
+
+
+def load():
+    return " ".join(open("/proc/loadavg").read().split()[:3])
+
+
+def solve_chunk(scenes):
+    return len(rollkin.solve_many(scenes, *SWEEP, threads=1))
+
+
+def dask_readings(variants, repeat, workers):
+    from dask.distributed import Client, LocalCluster
+    chunk = max(1, len(variants) // (4 * workers))
+    chunks = [variants[i:i + chunk] for i in range(0, len(variants), chunk)]
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            Client(cluster) as client:
+        client.gather(client.map(solve_chunk, chunks[:workers], pure=False))  # warm the workers (import rollkin)
+        return readings(lambda: client.gather(client.map(solve_chunk, chunks, pure=False)), repeat)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--repeat", type=int, default=7)
+    parser.add_argument("--variants", type=int, default=2000)
+    parser.add_argument("--no-dask", action="store_true", help="leave out the dask row")
     args = parser.parse_args()
-    r = args.repeat
-    print("load average before: %s; %d CPUs" % (" ".join(open("/proc/loadavg").read().split()[:3]), os.cpu_count()))
+    r, n = args.repeat, args.variants
+    cores = len(os.sched_getaffinity(0))
+    print("load average before: %s; %d CPUs" % (load(), cores))
     print("| case | median (min-max) |")
     print("|---|---:|")
     sc = rollkin.load_scene(SCENE)
@@ -50,13 +83,28 @@ def main():
         for analysis in (False, True):
             row("Scene.solve, %d poses%s, per pose" % (poses, ", analysis" if analysis else ""),
                 readings(lambda: sc.solve(-50, 100, step, analysis=analysis), r), "us", 1e6 / poses)
-    variants = [sc.modified({"links[1].contours[0].a": 0.45 + 0.01 * k}) for k in range(16)]
-    one = readings(lambda: rollkin.solve_many(variants, -50, 100, 0.01, threads=1), r)
-    two = readings(lambda: rollkin.solve_many(variants, -50, 100, 0.01, threads=2), r)
-    row("solve_many, 16 x 15001 poses, threads=1", one, "s", 1)
-    row("solve_many, 16 x 15001 poses, threads=2", two, "s", 1)
-    print("| speed-up of 2 threads (medians) | %.2f |" % (statistics.median(one) / statistics.median(two)))
-    print("load average after: %s" % " ".join(open("/proc/loadavg").read().split()[:3]))
+
+    variants = [sc.modified({"links[1].contours[0].a": 0.45 + 0.1 * k / n}) for k in range(n)]
+    bare = readings(lambda: sum(rollkin._sweep_seconds(v, *SWEEP) for v in variants), r)
+    one = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=1), r)
+    cpu0 = time.process_time()
+    every = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=0), r)
+    cpu_share = (time.process_time() - cpu0) / sum(every)
+    rate_row("%d variants x 151 poses: C++ loop (assembly + sweep), one thread" % n, bare, n)
+    rate_row("... solve_many, threads=1", one, n)
+    rate_row("... solve_many, threads=0 (%d cores)" % cores, every, n)
+    speedup = statistics.median(one) / statistics.median(every)
+    print("| speed-up of all cores (medians) | %.2f = %.2f x cores (CPU time / wall time %.2f) |" %
+          (speedup, speedup / cores, cpu_share))
+    per_variant = lambda t: statistics.median(t) / n * 1e6
+    print("| overhead of Python per variant (solve_many threads=1 - C++ loop) | %.1f us (C++ loop %.1f us) |" %
+          (per_variant(one) - per_variant(bare), per_variant(bare)))
+    if not args.no_dask:
+        dask = dask_readings(variants, r, 2)
+        rate_row("... dask.distributed, 2 local workers", dask, n)
+        print("| overhead of dask per variant (2 workers x C++ loop time - wall time) | %.1f us |" %
+              (2 * per_variant(dask) - per_variant(bare)))
+    print("load average after: %s" % load())
 
 
 if __name__ == "__main__":

@@ -6,31 +6,41 @@
 // released and, every kPollInterval, takes the GIL to run Python's signal handlers (PyErr_CheckSignals). A
 // Ctrl-C there raises the cancellation flag that sweep() polls between poses (ContinuationSettings::cancel),
 // the workers are joined and KeyboardInterrupt propagates.
+//
+// Files (Scene.write, Scene.centrodes(dxf=)) go through io::OutputSet like the CLI's: every path is checked
+// before solving, an output that is one of the scene's input files is refused, and all are written or none.
 #include "json_access.hpp"  // child(), index(), kind_of() of the scene reader's messages (src/io)
 
+#include "animation.hpp"     // the CLI's writers (src/cli, library rollkin_outputs): plots, drawing, animation
+#include "output.hpp"
+
+#include "rollkin/centrodes.hpp"
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/io/json_document.hpp"
+#include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/io/sweep_table.hpp"
+#include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace py = pybind11;
@@ -42,6 +52,37 @@ namespace {
 constexpr std::chrono::milliseconds kPollInterval{50};  // how often a waiting solve checks for Ctrl-C
 
 // ---- Python values <-> JSON ------------------------------------------------------------------------------
+
+/// A float NumPy array of 1 or 2 dimensions as JSON numbers (nested lists), read straight from its buffer:
+/// a large contour array goes into the document without a Python list in between. Non-finite values are an
+/// InputError at the element's JSON path.
+json float_array_json(py::handle v, const std::string& path, const std::string& file) {
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
+  if (!a || a.ndim() < 1 || a.ndim() > 2)
+    throw InputError(file, path, "a float array of " + std::to_string(a ? a.ndim() : 0) +
+                                     " dimensions; expected a vector or an (n, k) array");
+  const py::ssize_t rows = a.shape(0), cols = a.ndim() == 2 ? a.shape(1) : 1;
+  const double* data = a.data();
+  auto number = [&](py::ssize_t i, py::ssize_t j) -> json {
+    const double d = data[i * cols + j];
+    if (std::isfinite(d)) return d;
+    const std::string at = a.ndim() == 2 ? rollkin::io::index(rollkin::io::index(path, static_cast<std::size_t>(i)), static_cast<std::size_t>(j))
+                                            : rollkin::io::index(path, static_cast<std::size_t>(i));
+    throw InputError(file, at, "the number " + std::string(py::str(py::float_(d))) + " is not finite; expected a finite number");
+  };
+  json out = json::array();
+  out.get_ref<json::array_t&>().reserve(static_cast<std::size_t>(rows));
+  for (py::ssize_t i = 0; i < rows; ++i) {
+    if (a.ndim() == 1) {
+      out.push_back(number(i, 0));
+      continue;
+    }
+    json row = json::array();
+    for (py::ssize_t j = 0; j < cols; ++j) row.push_back(number(i, j));
+    out.push_back(std::move(row));
+  }
+  return out;
+}
 
 /// A Python value as JSON (dict, list/tuple, str, int, float, bool, None; NumPy arrays and scalars through
 /// their tolist()). What JSON cannot hold (NaN, infinities, other types, nesting deeper than the scene reader
@@ -79,6 +120,7 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
     for (auto item : v) out.push_back(to_json(item, rollkin::io::index(path, i++), file, depth + 1));
     return out;
   }
+  if (py::isinstance<py::array>(v) && py::array::ensure(v).dtype().kind() == 'f') return float_array_json(v, path, file);
   if (py::hasattr(v, "tolist") && py::hasattr(v, "dtype")) return to_json(v.attr("tolist")(), path, file, depth);
   throw InputError(file, path, "a Python " + std::string(py::str(v.get_type().attr("__name__"))) +
                                    " cannot be a scene value; expected a dict, list, str, number, bool or None");
@@ -119,28 +161,31 @@ struct PyScene {
   std::shared_ptr<const json> document;
   std::string file;  // names the source in messages
   std::string dir;   // relative contour files are resolved against it
+  std::string source;  // the scene file the document was read from ("" for a dict): never written over
 };
 
 /// `dir` is made absolute ("" is the working directory), so that a scene sent to another process (pickle, e.g.
 /// to dask workers) finds its contour files wherever that process runs.
-PyScene build(json document, const std::string& file, const std::string& dir) {
+PyScene build(json document, const std::string& file, const std::string& dir, const std::string& source = {}) {
   const std::string where = (dir.empty() ? std::filesystem::current_path() : std::filesystem::absolute(dir)).string();
   auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, where));
-  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where};
+  const std::string absolute_source = source.empty() ? source : std::filesystem::absolute(source).string();
+  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where, absolute_source};
 }
 
 /// Pickling: the document as JSON text, the name and the directory; unpickling builds the scene again.
-py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), s.file, s.dir); }
+py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), s.file, s.dir, s.source); }
 
 PyScene scene_from_state(const py::tuple& t) {
-  if (t.size() != 3) throw py::value_error("rollkin.Scene: a pickled state is (document, file, dir)");
+  if (t.size() != 4) throw py::value_error("rollkin.Scene: a pickled state is (document, file, dir, source)");
   const std::string file = t[1].cast<std::string>();
-  return build(rollkin::io::parse_json_document(t[0].cast<std::string>(), file), file, t[2].cast<std::string>());
+  return build(rollkin::io::parse_json_document(t[0].cast<std::string>(), file), file, t[2].cast<std::string>(),
+               t[3].cast<std::string>());
 }
 
 PyScene load_scene(const py::object& path) {
   const std::string file = path_text(path);
-  return build(rollkin::io::read_scene_document(file), file, std::filesystem::path(file).parent_path().string());
+  return build(rollkin::io::read_scene_document(file), file, std::filesystem::path(file).parent_path().string(), file);
 }
 
 PyScene scene_from_dict(const py::dict& document, const py::object& base_dir, const std::string& name) {
@@ -162,27 +207,64 @@ PyScene modified(const PyScene& s, const py::dict& overrides) {
     const std::string path = item.first.cast<std::string>();
     rollkin::io::set_at_path(document, path, to_json(item.second, path, file), file);
   }
-  return build(std::move(document), file, s.dir);
+  return build(std::move(document), file, s.dir, s.source);
 }
 
-py::dict samples(const py::array_t<double, py::array::c_style | py::array::forcecast>& xy, const std::string& name,
-                 const py::kwargs& options) {
+/// An (n, 2) float64 array of points, checked: the shape and every value finite (ValueError naming the row).
+using PointArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+void check_points(const PointArray& xy, const char* function, const char* argument) {
+  const std::string what = std::string(function) + "(): " + argument;
   if (xy.ndim() != 2 || xy.shape(1) != 2)
-    throw py::value_error("samples(): xy must have shape (n, 2) (one row x, y per sample), got " +
+    throw py::value_error(what + " must have shape (n, 2) (one row x, y per point), got " +
                           std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(xy.shape(), xy.shape() + xy.ndim()))))));
   auto a = xy.unchecked<2>();
-  py::list points;
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+  for (py::ssize_t i = 0; i < a.shape(0); ++i)
     if (!std::isfinite(a(i, 0)) || !std::isfinite(a(i, 1)))
-      throw py::value_error("samples(): row " + std::to_string(i) + " of xy is not finite (" +
-                            std::string(py::str(py::float_(a(i, 0)))) + ", " + std::string(py::str(py::float_(a(i, 1)))) + ")");
-    points.append(py::make_tuple(a(i, 0), a(i, 1)));
-  }
+      throw py::value_error(what + ": row " + std::to_string(i) + " is not finite (" + std::string(py::str(py::float_(a(i, 0)))) +
+                            ", " + std::string(py::str(py::float_(a(i, 1)))) + ")");
+}
+
+/// A contour dict of `type` with the given keys; `options` adds the contour's other keys.
+py::dict contour_dict(const std::string& name, const char* type, const py::kwargs& options) {
   py::dict contour;
   contour["name"] = name;
-  contour["type"] = "samples";
-  contour["points"] = points;
+  contour["type"] = type;
   for (auto item : options) contour[item.first] = item.second;
+  return contour;
+}
+
+/// The array itself goes into the dict (no copy when the caller's array is already contiguous float64); the
+/// scene's document takes one copy when the scene is built.
+py::dict samples(const PointArray& xy, const std::string& name, const py::kwargs& options) {
+  check_points(xy, "samples", "xy");
+  py::dict contour = contour_dict(name, "samples", options);
+  contour["points"] = xy;
+  return contour;
+}
+
+/// A clamped uniform knot vector for n control points of degree p: p + 1 zeros, the interior knots 1 .. n - p - 1,
+/// p + 1 values n - p (docs/scene_format.md, nurbs contours: any non-decreasing scale works).
+py::array_t<double> clamped_uniform_knots(py::ssize_t n, int p) {
+  py::array_t<double> knots(n + p + 1);
+  double* k = knots.mutable_data();
+  for (py::ssize_t i = 0; i < n + p + 1; ++i) k[i] = static_cast<double>(std::clamp<py::ssize_t>(i - p, 0, n - p));
+  return knots;
+}
+
+py::dict nurbs(const PointArray& points, int degree, const py::object& knots, const py::object& weights,
+               const std::string& name, const py::kwargs& options) {
+  check_points(points, "nurbs", "points");
+  if (degree < 1) throw py::value_error("nurbs(): degree must be >= 1, got " + std::to_string(degree));
+  const py::ssize_t n = points.shape(0);
+  if (n < degree + 1)
+    throw py::value_error("nurbs(): " + std::to_string(n) + " control points given; degree " + std::to_string(degree) +
+                          " needs at least degree + 1 = " + std::to_string(degree + 1));
+  py::dict contour = contour_dict(name, "nurbs", options);
+  contour["degree"] = degree;
+  contour["points"] = points;
+  contour["knots"] = knots.is_none() ? py::object(clamped_uniform_knots(n, degree)) : knots;
+  if (!weights.is_none()) contour["weights"] = weights;
   return contour;
 }
 
@@ -195,7 +277,7 @@ struct Request {
   double max_steps = 1e7;
 };
 
-/// One scene to solve and, once solved, its table.
+/// One scene to solve and, once solved, its table (and, for writing files from it, its sweep result).
 struct Job {
   std::shared_ptr<const rollkin::io::Scene> scene;
   rollkin::io::Sweep sweep;
@@ -203,6 +285,10 @@ struct Job {
   rollkin::SolveReport<double> assembly;
   rollkin::io::SweepTable table;
   std::exception_ptr error;
+  bool keep_result = false;    // keep `result` and `analysis` (Scene.write, Scene.centrodes)
+  std::optional<rollkin::SweepResult<double>> result;
+  rollkin::io::SweepAnalysis analysis;
+  std::vector<double> values;  // the inputs in file units (the table's input column)
 };
 
 /// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise).
@@ -228,6 +314,11 @@ Job prepare(const PyScene& s, const Request& r) {
   return job;
 }
 
+/// What the CLI's writers take: the solved sweep of a job (job.result set).
+rollkin::io::SweepOutput output_of(const Job& job, const Request& r) {
+  return {*job.scene, job.sweep, *job.result, job.values, r.analysis ? &job.analysis : nullptr};
+}
+
 /// Assembles and sweeps one scene (on a worker thread: no Python here). Exceptions are kept in job.error.
 void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
   try {
@@ -238,67 +329,55 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
     job.assembly = rollkin::assemble(m, q, sd, scene.held);
     rollkin::ContinuationSettings<double> cfg;
     cfg.cancel = &cancel;
-    const rollkin::SweepResult<double> result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
+    job.result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
     if (cancel) return;
-    const std::vector<double> values = rollkin::io::sweep_values(job.sweep);
-    const rollkin::io::SweepAnalysis analysis = r.analysis ? rollkin::io::analyse_sweep(m, result) : rollkin::io::SweepAnalysis{};
-    job.table = rollkin::io::sweep_table({scene, job.sweep, result, values, r.analysis ? &analysis : nullptr}, r.rates);
+    job.values = rollkin::io::sweep_values(job.sweep);
+    if (r.analysis) job.analysis = rollkin::io::analyse_sweep(m, *job.result);
+    job.table = rollkin::io::sweep_table(output_of(job, r), r.rates);
+    if (!job.keep_result) job.result.reset();
   } catch (...) {
     job.error = std::current_exception();
   }
 }
 
-/// Solves every job on up to `threads` worker threads (0: one per core) with the GIL released, the calling
-/// thread checking for Ctrl-C every kPollInterval. A signal handler's exception (KeyboardInterrupt) cancels
-/// the workers (between poses), waits for them and propagates.
+/// Solves every job on up to `threads` worker threads (0: one per core; rollkin::run_batch) with the GIL
+/// released, the calling thread checking for Ctrl-C every kPollInterval. A signal handler's exception
+/// (KeyboardInterrupt) cancels the workers (between poses), waits for them and propagates.
 void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
   if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core), got " + std::to_string(threads));
-  std::size_t n = threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
-  n = std::min(n, jobs.size());
-  if (n == 0) return;
-  std::atomic<bool> cancel{false};
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::condition_variable done;
-  std::size_t finished = 0;  // workers that have returned (under mutex)
   bool interrupted = false;
   {
     py::gil_scoped_release nogil;
-    std::vector<std::thread> workers;
-    auto work = [&] {
-      for (std::size_t k; !cancel && (k = next++) < jobs.size();) run(jobs[k], r, cancel);
-      const std::lock_guard<std::mutex> lock(mutex);
-      ++finished;
-      done.notify_all();
-    };
-    try {
-      for (std::size_t i = 0; i < n; ++i) workers.emplace_back(work);
-    } catch (...) {  // no thread could be started: stop those that were, then report
-      cancel = true;
-      for (std::thread& t : workers) t.join();
-      throw;
-    }
-    std::unique_lock<std::mutex> lock(mutex);
-    while (finished < workers.size()) {
-      if (done.wait_for(lock, kPollInterval, [&] { return finished == workers.size(); })) break;
-      lock.unlock();
-      {
-        py::gil_scoped_acquire gil;
-        interrupted = PyErr_CheckSignals() != 0;
-      }
-      lock.lock();
-      if (interrupted) {
-        cancel = true;
-        break;
-      }
-    }
-    lock.unlock();
-    for (std::thread& t : workers) t.join();
+    rollkin::run_batch(
+        jobs.size(), threads, [&](std::size_t k, const std::atomic<bool>& cancel) { run(jobs[k], r, cancel); },
+        [&] {
+          py::gil_scoped_acquire gil;
+          interrupted = PyErr_CheckSignals() != 0;
+          return interrupted;
+        },
+        kPollInterval);
   }
   if (interrupted) throw py::error_already_set();
 }
 
-/// A solved job as a dict: column name -> float64 array, "status" -> array of str.
+/// Texts as a NumPy array of str (dtype <U width of the longest), its UCS-4 buffer filled here: no Python
+/// string per row.
+template <class Texts> py::array str_array(const Texts& texts) {
+  std::size_t width = 1;
+  for (const std::string& t : texts) width = std::max(width, t.size());
+  py::array out = py::module_::import("numpy").attr("empty")(std::size(texts), py::arg("dtype") = "<U" + std::to_string(width));
+  auto* chars = static_cast<char32_t*>(out.mutable_data());
+  std::fill(chars, chars + std::size(texts) * width, U'\0');
+  std::size_t row = 0;
+  for (const std::string& t : texts) {
+    for (std::size_t i = 0; i < t.size(); ++i) chars[row * width + i] = static_cast<unsigned char>(t[i]);
+    ++row;
+  }
+  return out;
+}
+
+/// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
+/// assembled also "error": the InputError message Scene.solve would raise for it.
 py::dict to_dict(const Job& job) {
   const rollkin::io::SweepTable& t = job.table;
   py::dict out;
@@ -307,19 +386,143 @@ py::dict to_dict(const Job& job) {
     if (t.rows()) std::memcpy(a.mutable_data(), t.columns[c].data(), t.rows() * sizeof(double));
     out[py::str(t.names[c])] = std::move(a);
   }
-  py::list status;
-  for (const std::string& s : t.status) status.append(s);
-  out[py::str(t.status_name)] = py::module_::import("numpy").attr("array")(status, py::arg("dtype") = "str");
+  out[py::str(t.status_name)] = str_array(t.status);
+  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
+    out["error"] = rollkin::io::assembly_error(*job.scene, job.assembly.detail).what();
   return out;
 }
 
-py::dict solve(const PyScene& s, const Request& r) {
+/// Solves one scene on a worker thread; an assembly that fails is an InputError, as in the CLI.
+Job solved(const PyScene& s, const Request& r, bool keep_result) {
   std::vector<Job> jobs{prepare(s, r)};
+  jobs[0].keep_result = keep_result;
   run_all(jobs, r, 1);
   if (jobs[0].error) std::rethrow_exception(jobs[0].error);
   if (jobs[0].assembly.status == rollkin::SolveStatus::CannotAssemble)
     throw rollkin::io::assembly_error(*s.scene, jobs[0].assembly.detail);
-  return to_dict(jobs[0]);
+  return std::move(jobs[0]);
+}
+
+py::dict solve(const PyScene& s, const Request& r) { return to_dict(solved(s, r, false)); }
+
+// ---- files -----------------------------------------------------------------------------------------------
+
+/// The files a scene read (never written over) as an OutputSet's inputs.
+rollkin::io::OutputSet output_set(const PyScene& s) {
+  std::vector<std::string> inputs;
+  if (!s.source.empty()) inputs.push_back(s.source);
+  inputs.insert(inputs.end(), s.scene->files_read.begin(), s.scene->files_read.end());
+  return rollkin::io::OutputSet(std::move(inputs));
+}
+
+/// An output file requested by keyword: its label in messages, its path (None: not written) and its text.
+struct FileRequest {
+  const char* label;
+  py::object path;
+  std::function<std::string(const rollkin::io::SweepOutput&)> text;
+};
+
+/// Checks every requested path (before solving), solves, and writes every file or none.
+py::dict write(const PyScene& s, const Request& r, const std::vector<FileRequest>& files) {
+  rollkin::io::OutputSet outputs = output_set(s);
+  std::vector<std::pair<std::size_t, const FileRequest*>> given;
+  for (const FileRequest& f : files)
+    if (!f.path.is_none()) given.emplace_back(outputs.add(f.label, path_text(f.path)), &f);
+  const Job job = solved(s, r, true);
+  const rollkin::io::SweepOutput out = output_of(job, r);
+  for (const auto& [index, f] : given) outputs.set(index, f->text(out));
+  outputs.commit();
+  return to_dict(job);
+}
+
+// ---- centrodes and the MPFR reference ----------------------------------------------------------------------
+
+int link_named(const rollkin::io::Scene& scene, const std::string& name) {
+  const int i = scene.mechanism.find_link(name);
+  if (i >= 0) return i;
+  std::string names;
+  for (const rollkin::Link& l : scene.mechanism.links) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+  throw py::value_error("no link \"" + name + "\" in " + scene.file + "; its links are " + names);
+}
+
+/// The instant centres of link b relative to link a over the sweep, as arrays (centrodes.hpp), optionally
+/// also written as DXF splines (the CLI's `centrodes --dxf`).
+py::dict centrodes(const PyScene& s, const std::string& link_a, const std::string& link_b, const Request& r,
+                   const py::object& dxf) {
+  const int a = link_named(*s.scene, link_a), b = link_named(*s.scene, link_b);
+  if (a == b) throw py::value_error("centrodes(): give two different links, got \"" + link_a + "\" twice");
+  rollkin::io::OutputSet outputs = output_set(s);
+  const std::optional<std::size_t> dxf_index =
+      dxf.is_none() ? std::nullopt : std::optional<std::size_t>(outputs.add("dxf", path_text(dxf)));
+  const Job job = solved(s, r, true);
+  const rollkin::Mechanism<double>& m = s.scene->mechanism;
+  rollkin::KinematicsData<double> kin(m);
+  const auto centres = rollkin::centrodes(m, kin, *job.result, a, b);
+  if (dxf_index) {
+    outputs.set(*dxf_index, rollkin::cli::centrode_dxf(output_of(job, r), centres, a, b));
+    outputs.commit();
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(centres.size());
+  py::array_t<double> input(n), ax(n), ay(n), bx(n), by(n), wx(n), wy(n);
+  py::array_t<bool> finite(n);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const auto& c = centres[static_cast<std::size_t>(k)];
+    input.mutable_at(k) = job.values[static_cast<std::size_t>(k)];
+    finite.mutable_at(k) = c.finite;
+    ax.mutable_at(k) = c.finite ? c.in_a.x() : nan;
+    ay.mutable_at(k) = c.finite ? c.in_a.y() : nan;
+    bx.mutable_at(k) = c.finite ? c.in_b.x() : nan;
+    by.mutable_at(k) = c.finite ? c.in_b.y() : nan;
+    wx.mutable_at(k) = c.finite ? c.world.x() : nan;
+    wy.mutable_at(k) = c.finite ? c.world.y() : nan;
+  }
+  py::dict out;
+  out[py::str(job.table.names.front())] = input;
+  out["a"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(ax, ay));
+  out["b"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(bx, by));
+  out["world"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(wx, wy));
+  out["finite"] = finite;
+  out[py::str(job.table.status_name)] = to_dict(job)[py::str(job.table.status_name)];
+  return out;
+}
+
+/// The sweep solved in MPFR (io::scene_reference) as float64 arrays: the columns of `rollkin reference --csv`
+/// (display units), each value the decimal result correctly rounded to the nearest double.
+py::dict reference(const PyScene& s, const Request& r, int digits) {
+  if (digits != 30 && digits != 50 && digits != 100)
+    throw py::value_error("reference(): digits must be 30, 50 or 100, got " + std::to_string(digits));
+  const Job job = prepare(s, r);
+  rollkin::ReferenceSweep ref;
+  {
+    py::gil_scoped_release nogil;
+    ref = rollkin::io::scene_reference(*s.scene, job.sweep, digits);
+  }
+  if (ref.assembly_status == rollkin::SolveStatus::CannotAssemble)
+    throw rollkin::io::assembly_error(*s.scene, ref.assembly_detail);
+  const rollkin::Mechanism<double>& m = s.scene->mechanism;
+  const int input = m.drivers[static_cast<std::size_t>(job.sweep.driver)];
+  const py::ssize_t n = static_cast<py::ssize_t>(ref.poses.size());
+  auto column = [&](auto field) {
+    py::array_t<double> a(n);
+    for (py::ssize_t k = 0; k < n; ++k) a.mutable_at(k) = std::strtod(field(ref.poses[static_cast<std::size_t>(k)]).c_str(), nullptr);
+    return a;
+  };
+  auto solved_value = [](const rollkin::ReferencePose& p, const std::string& v) {
+    const bool ok = p.status == rollkin::SolveStatus::Converged || p.status == rollkin::SolveStatus::Singular;
+    return ok ? v : std::string("nan");
+  };
+  py::dict out;
+  out[py::str(ref.variables[static_cast<std::size_t>(input)])] = column([](const rollkin::ReferencePose& p) { return p.input; });
+  for (int i = 0; i < m.variable_count(); ++i)
+    if (i != input)
+      out[py::str(ref.variables[static_cast<std::size_t>(i)])] =
+          column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.q[static_cast<std::size_t>(i)]); });
+  out["residual"] = column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.residual); });
+  std::vector<std::string> status;
+  for (const auto& p : ref.poses) status.emplace_back(rollkin::to_string(p.status));
+  out["status"] = str_array(status);
+  return out;
 }
 
 py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int threads) {
@@ -386,8 +589,31 @@ scenes: a list of Scene; start, stop, step, analysis, rates, max_steps: as Scene
 scene's own "sweep"). threads: the number of worker threads, 0 for one per core.
 Returns a list of dicts, one per scene in order, each as Scene.solve returns it. A scene that cannot be
 assembled does not stop the batch: its dict has NaN values and the status "cannot_assemble" in every row
-(Scene.solve on it alone raises InputError with the reason). The GIL is released while solving; Ctrl-C
+and "error": the InputError message Scene.solve would raise for it. The GIL is released while solving; Ctrl-C
 cancels the workers between poses and raises KeyboardInterrupt within a second.)";
+
+const char* const kWriteDoc = R"(Solves like solve() and writes the CLI's output files from the result.
+
+csv, plot, draw, animate: paths (None: not written) of the files `rollkin solve --csv --plot --draw --animate`
+writes: the table, the charts (with analysis=True also the analysis charts), the drawing of the mechanism and
+the self-contained HTML animation. Every path is checked before solving; a path that is one of the scene's
+input files, a missing directory or a directory raises OutputError (an OSError) and nothing is written. The
+files are written all or nothing, each through a temporary in its own directory. Returns the table as solve().)";
+
+const char* const kCentrodesDoc = R"(The centrodes of link_b's motion relative to link_a over the sweep.
+
+Returns a dict: the input column (as in solve()), "a" and "b": (n, 2) arrays of the instant centre in link_a's
+frame (the fixed centrode when link_a is the ground) and in link_b's frame (the moving centrode), "world": in
+the world frame, "finite": False where the centre is at infinity (pure relative translation) or the pose was not
+solved (NaN rows), "status" as in solve(). dxf: a path for both centrodes as DXF splines (as the CLI's
+`rollkin centrodes --dxf`), written only after the sweep succeeded, never over an input file.)";
+
+const char* const kReferenceDoc = R"(The same assembly and sweep solved in MPFR with `digits` decimal digits (30, 50, 100).
+
+Returns a dict of float64 arrays with the columns of `rollkin reference --csv` (the input, every other
+variable in the file's units, "residual") and "status": each value is the high-precision result rounded once
+to the nearest double, so solve()'s columns can be compared with it to measure the double solver's error.
+The MPFR run takes milliseconds per pose; it holds no GIL but cannot be interrupted before it ends.)";
 
 }  // namespace
 
@@ -399,9 +625,15 @@ PYBIND11_MODULE(rollkin, m) {
       "Bad input (a scene, a contour file, an override): a ValueError whose message names the file, the location\n"
       "(JSON path, line) and what is wrong and expected, as the command-line tool prints it. Attributes: file,\n"
       "location (e.g. the JSON path \"links[1].contours[0].a\"), message.";
+  static py::exception<rollkin::io::OutputError> output_error(m, "OutputError", PyExc_OSError);
+  output_error.attr("__doc__") =
+      "An output file that cannot or must not be written (an OSError): a missing directory, a directory, one of\n"
+      "the scene's input files. Raised before anything is solved or written; no file is changed.";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const rollkin::io::OutputError& e) {
+      PyErr_SetString(output_error.ptr(), e.what());
     } catch (const InputError& e) {
       py::object error = py::reinterpret_borrow<py::object>(input_error)(e.what());
       error.attr("file") = e.file();
@@ -422,6 +654,36 @@ PYBIND11_MODULE(rollkin, m) {
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = 1e7, kSolveDoc)
+      .def("write",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              const py::object& csv, const py::object& plot, const py::object& draw, const py::object& animate,
+              bool analysis, bool rates, double max_steps) {
+             namespace cli = rollkin::cli;
+             return write(s, request(start, stop, step, analysis, rates, max_steps),
+                          {{"csv", csv, [rates](const rollkin::io::SweepOutput& o) { return cli::csv_text(o, rates); }},
+                           {"plot", plot, &cli::plot_svg},
+                           {"draw", draw, &cli::draw_svg},
+                           {"animate", animate, &cli::animation_html}});
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("draw") = py::none(),
+           py::arg("animate") = py::none(), py::arg("analysis") = false, py::arg("rates") = false,
+           py::arg("max_steps") = 1e7, kWriteDoc)
+      .def("centrodes",
+           [](const PyScene& s, const std::string& a, const std::string& b, std::optional<double> start,
+              std::optional<double> stop, std::optional<double> step, const py::object& dxf, double max_steps) {
+             return centrodes(s, a, b, request(start, stop, step, false, false, max_steps), dxf);
+           },
+           py::arg("link_a"), py::arg("link_b"), py::arg("start") = py::none(), py::arg("stop") = py::none(),
+           py::arg("step") = py::none(), py::kw_only(), py::arg("dxf") = py::none(), py::arg("max_steps") = 1e7,
+           kCentrodesDoc)
+      .def("reference",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              int digits, double max_steps) {
+             return reference(s, request(start, stop, step, false, false, max_steps), digits);
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("digits") = 50, py::arg("max_steps") = 1e7, kReferenceDoc)
       .def("modified", &modified, py::arg("overrides"),
            "A new scene with each value of `overrides` ({JSON path: value}, e.g. {\"links[1].contours[0].a\": 0.6})\n"
            "set in a copy of this scene's document, then checked like a scene file: a path that does not exist or a\n"
@@ -450,6 +712,14 @@ PYBIND11_MODULE(rollkin, m) {
         "a scene's contour list takes; keyword arguments add the contour's other keys (closed, smoothing, scale,\n"
         "parameter, at, material). xy is read as contiguous float64; a non-finite value raises ValueError.\n"
         "    contour = rollkin.samples(np.c_[x, y], name=\"profile\", closed=True)");
+  m.def("nurbs", &nurbs, py::arg("points"), py::arg("degree") = 3, py::arg("knots") = py::none(),
+        py::arg("weights") = py::none(), py::arg("name") = "nurbs",
+        "A NURBS contour (type \"nurbs\", docs/scene_format.md) from an (n, 2) array of control points, as the dict a\n"
+        "scene's contour list takes. knots: n + degree + 1 non-decreasing values (default: clamped and uniform, the\n"
+        "curve from the first control point to the last); weights: one positive weight per point (default: a\n"
+        "polynomial B-spline). Keyword arguments add the contour's other keys (closed, parameter, at, material).\n"
+        "The knots and weights are checked when the scene is built (InputError at their JSON path).\n"
+        "    cam = rollkin.nurbs(np.c_[x, y], degree=3, name=\"cam\")");
   m.def("solve_many",
         [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
            std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {
@@ -458,5 +728,21 @@ PYBIND11_MODULE(rollkin, m) {
         py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
         py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
         py::arg("max_steps") = 1e7, kSolveManyDoc);
+  m.def("_sweep_seconds",
+        [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
+          // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
+          // table and no NumPy, for the overhead of Python and dask per variant against it.
+          Job job = prepare(s, request(start, stop, step, false, false, 1e7));
+          py::gil_scoped_release nogil;
+          const auto t0 = std::chrono::steady_clock::now();
+          const rollkin::Mechanism<double>& m = job.scene->mechanism;
+          rollkin::SolveData<double> sd(m);
+          rollkin::VectorX<double> q = job.scene->guess;
+          const auto assembly = rollkin::assemble(m, q, sd, job.scene->held);
+          [[maybe_unused]] const auto result = rollkin::sweep(m, sd, q, assembly, job.sweep.driver, job.inputs);
+          const std::chrono::duration<double> t = std::chrono::steady_clock::now() - t0;
+          return t.count();
+        },
+        py::arg("scene"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none());
   m.attr("__version__") = ROLLKIN_VERSION;
 }

@@ -40,7 +40,7 @@ packages=(
 if [[ "$what" == all ]]; then
   packages+=(python3-ezdxf python3-svgelements chromium chromium-driver python3-selenium)
   packages+=(pybind11-dev python3-pybind11 python3-numpy python3-pytest)  # the Python module and its test
-  packages+=(python3-scipy python3-distributed)  # examples/python (fit_profile.py, design_study.py), tested
+  packages+=(python3-scipy python3-distributed python3-matplotlib)  # examples/python (fit_profile.py, design_study.py), tested
 fi
 
 installed() { dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed'; }

@@ -89,6 +89,11 @@ BOOST_AUTO_TEST_CASE(paper_example_has_no_interference) {
     BOOST_TEST(p.clear(), "theta2 " << rad_to_deg(p.input) << ": " << p.findings.size() << " findings, first "
                                     << (p.findings.empty() ? "" : to_string(p.findings[0].kind)));
   }
+  // The chords' distance from the disks is the sagitta R (1 - cos(pi / n)) of a regular n-gon (closed form).
+  const double n = InterferenceCheck{}.samples_per_contour;
+  BOOST_TEST(res.chord_error[1] == 1 * (1 - std::cos(pi<double>() / n)), boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(res.chord_error[2] == 4 * (1 - std::cos(pi<double>() / n)), boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(res.max_chord_error() >= res.chord_error[0]);
   // Asking for nothing checks nothing but curvature.
   InterferenceCheck only_curvature;
   only_curvature.contour_pairs = {{0, 2}};

@@ -28,6 +28,7 @@
 #include "rollkin/io/scene.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/solve/continuation.hpp"
+#include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/interference.hpp"
 
 #include <CLI/CLI.hpp>
@@ -64,7 +65,9 @@ struct UsageError : std::runtime_error {
 };
 
 /// What the run is doing, for the message of an allocation failure ("out of memory while ...").
-const char* g_doing = "starting";
+thread_local const char* g_doing = "starting";  // per thread: several scenes may be solved at once (--jobs)
+
+int error_status(std::ostream& err);
 
 const char* kExitStatus =
     "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
@@ -137,8 +140,12 @@ struct SweepRequest {
   double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
 };
 
-void add_sweep_options(CLI::App& app, SweepRequest& r) {
-  app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
+/// The sweep options; the positional SCENE goes to r.scene, or, when `scenes` is given, one or more of them.
+void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>* scenes = nullptr) {
+  if (scenes)
+    app.add_option("SCENE", *scenes, "the scene(s): JSON files (docs/scene_format.md)")->required()->type_name("");
+  else
+    app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
   add_number(app, "--from", r.from, r.from_text, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
   add_number(app, "--to", r.to, r.to_text, "last input value (overrides the scene's \"sweep\")");
   add_number(app, "--step", r.step, r.step_text, "step between input values, signed from --from toward --to");
@@ -290,10 +297,10 @@ std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep&
   return problems;
 }
 
-void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
+void print_assembly(std::ostream& out, const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
   const Mechanism<double>& m = scene.mechanism;
-  for (const std::string& n : scene.notes) std::cout << "contour " << n << "\n";
-  std::cout << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
+  for (const std::string& n : scene.notes) out << "contour " << n << "\n";
+  out << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
             << fmt(rep.residual, 3) << "\n"
             << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()
             << "), equations " << m.equation_count() << " (" << m.loops.size() << " loop(s) x 3 + "
@@ -301,12 +308,12 @@ void print_assembly(const io::Scene& scene, const SolveReport<double>& rep, cons
             << "  rank of the unknowns' Jacobian " << rep.rank << ", condition " << fmt(rep.condition, 3) << "\n"
             << "  rank of the full Jacobian " << ar.rank << ": redundant constraints " << ar.redundant
             << ", mobility (DOF = variables - rank) " << ar.mobility << "\n";
-  if (!rep.detail.empty()) std::cout << "  " << rep.detail << "\n";
+  if (!rep.detail.empty()) out << "  " << rep.detail << "\n";
   if (m.unknowns.empty())
-    std::cout << "  nothing to solve: every pair variable is an input, so each pose follows from the inputs alone"
+    out << "  nothing to solve: every pair variable is an input, so each pose follows from the inputs alone"
                  " (forward kinematics)\n";
   else if (ar.mobility == 0)
-    std::cout << "  the mechanism has zero degrees of freedom: it is a rigid structure, its inputs cannot move\n";
+    out << "  the mechanism has zero degrees of freedom: it is a rigid structure, its inputs cannot move\n";
 }
 
 /// Contact pairs whose signed curvatures cancel at q (osculation): their contact Jacobian is singular
@@ -327,8 +334,9 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
   return out;
 }
 
-/// --interference: contours sampled in world coordinates at every solved pose (solve/interference.hpp); one
-/// line per run of consecutive poses with the same finding, inputs in the file's units.
+/// --interference: contours sampled once in their links' frames and checked at every solved pose
+/// (solve/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
+/// file's units, with the chords' distance from the curves and the touch tolerance.
 std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
   const SweepInterference si = check_interference(m, result);
@@ -354,7 +362,9 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
   for (const auto& r : runs)
     lines.push_back(std::string("interference: ") + to_string(r.kind) + " between '" + m.contours[r.a].name() +
                     "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
-                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit));
+                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit) + " (decided on chords within " +
+                    fmt(std::max(si.chord_error[r.a], si.chord_error[r.b]), 2) + " " + scene.length_unit +
+                    " of the contours, touch tolerance " + fmt(si.touch_tolerance, 2) + " " + scene.length_unit + ")");
   return lines;
 }
 
@@ -474,8 +484,10 @@ DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const Sw
 
 struct SolveOptions {
   SweepRequest sweep;
+  std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
   std::string csv, plot, draw, animate;
   bool rates = false, analysis = false, verbose = false, interference = false;
+  int jobs = 0;  // scenes solved at once (0: one per core)
 };
 
 int run_solve(const SolveOptions& o);
@@ -483,7 +495,7 @@ int run_solve(const SolveOptions& o);
 Command solve_command(CLI::App& rollkin) {
   auto o = std::make_shared<SolveOptions>();
   CLI::App* app = rollkin.add_subcommand("solve", "assemble the mechanism and sweep its input (double precision)");
-  add_sweep_options(*app, o->sweep);
+  add_sweep_options(*app, o->sweep, &o->scenes);
   add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
   add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
   add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at four poses across the solved range, one panel each");
@@ -497,6 +509,9 @@ Command solve_command(CLI::App& rollkin) {
                 "print the assembly report, how imported contours were converted and the design check (as 'rollkin check')");
   app->add_flag("--interference", o->interference,
                 "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
+  app->add_option("-j,--jobs", o->jobs, "with several scenes: how many are solved at once (default 0: one per core)")
+      ->type_name("N")
+      ->check(number("a number of scenes at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
   app->footer(
       "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
       "--step override it), following one branch in both directions from the assembly pose.\n"
@@ -506,13 +521,18 @@ Command solve_command(CLI::App& rollkin) {
       "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
       "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
       "--max-steps: the estimate is the input's travel over the largest sub-step (5 deg for angles) plus the\n"
-      "number of values.\n" +
+      "number of values.\n"
+      "Several scenes (rollkin solve A.json B.json ... --jobs N): each is solved as if alone, N at a time, with\n"
+      "the same options; every output name must contain {scene}, replaced by each scene file's name without\n"
+      "its extension (--csv 'out/{scene}.csv'). Reports come in the order the scenes were given; a scene that\n"
+      "fails does not stop the others; the exit status is the worst of the scenes'.\n" +
       std::string(kExitStatus));
   return {app, [o] { return run_solve(*o); }};
 }
 
-/// `rollkin solve`: assembly, sweep, outputs, summary on stdout, one line per problem on stderr.
-int run_solve(const SolveOptions& o) {
+/// `rollkin solve` on one scene (o.sweep.scene): assembly, sweep, outputs, summary on `out`, one line per
+/// problem on `err`.
+int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}});
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
@@ -522,7 +542,7 @@ int run_solve(const SolveOptions& o) {
   SolveData<double> sd(m);
   VectorX<double> q;
   const SolveReport<double> assembly = assemble_scene(scene, sd, q);
-  if (o.verbose) print_assembly(scene, assembly, cli::full_rank(m, sd));
+  if (o.verbose) print_assembly(out, scene, assembly, cli::full_rank(m, sd));
   g_doing = "solving the sweep";
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
 
@@ -569,14 +589,85 @@ int run_solve(const SolveOptions& o) {
               << fmt(result.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
   }
   if (singular) summary << ", " << singular << " singular pose(s)";
-  std::cout << summary.str() << "\n";
+  out << summary.str() << "\n";
   if (o.verbose) {
     const DesignReport design = design_report(scene, sw, result);
-    for (const auto& l : design.section) std::cout << l << "\n";
-    for (const auto& f : design.findings) std::cout << "  " << f << "\n";
+    for (const auto& l : design.section) out << l << "\n";
+    for (const auto& f : design.findings) out << "  " << f << "\n";
   }
-  for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
+  for (const auto& p : problems) err << scene.file << ": " << p << "\n";
   return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
+}
+
+/// The options of each of several scenes: {scene} in every output name replaced by the scene file's stem.
+/// UsageError for an output name without {scene}, two scenes with the same stem, or an output that would
+/// be one of the scene files.
+std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
+  std::vector<SolveOptions> each;
+  std::map<std::string, std::string> stems;  // stem -> scene file
+  for (const std::string& file : o.scenes) {
+    const std::string stem = fs::path(file).stem().string();
+    const auto [at, fresh] = stems.emplace(stem, file);
+    if (!fresh)
+      throw UsageError("scenes '" + at->second + "' and '" + file + "' have the same name \"" + stem +
+                       "\": their output files ({scene}) would be the same; rename one");
+    SolveOptions one = o;
+    one.scenes = {file};
+    one.sweep.scene = file;
+    for (auto [option, path] : {std::pair{"--csv", &one.csv}, {"--plot", &one.plot}, {"--draw", &one.draw},
+                                {"--animate", &one.animate}}) {
+      if (path->empty()) continue;
+      const std::size_t at_token = path->find("{scene}");
+      if (at_token == std::string::npos)
+        throw UsageError(std::string(option) + " '" + *path + "': with several scenes each needs its own file; put " +
+                         "{scene} in the name, e.g. 'out/{scene}.csv'");
+      path->replace(at_token, 7, stem);
+      for (const std::string& input : o.scenes)
+        if (std::error_code ec; fs::equivalent(*path, input, ec))
+          throw UsageError(std::string(option) + " '" + *path + "' is the scene file '" + input +
+                           "'; inputs are never overwritten, choose another name");
+    }
+    each.push_back(std::move(one));
+  }
+  return each;
+}
+
+/// Several scenes: each solved as alone (solve_scene) on up to o.jobs threads, its report kept and printed in
+/// the order given; a scene's error is reported as the command line would report it alone and does not stop
+/// the others. The exit status is the worst of the scenes'.
+int solve_scenes(const SolveOptions& o) {
+  const std::vector<SolveOptions> each = per_scene_options(o);
+  struct Report {
+    std::ostringstream out, err;
+    int status = 0;
+  };
+  std::vector<Report> reports(each.size());
+  run_batch(each.size(), o.jobs, [&](std::size_t k, const std::atomic<bool>&) {
+    Report& r = reports[k];
+    try {
+      r.status = solve_scene(each[k], r.out, r.err);
+    } catch (const UsageError& e) {
+      r.err << "rollkin: " << each[k].sweep.scene << ": " << e.what() << "\n";
+      r.status = 2;
+    } catch (...) {
+      r.status = error_status(r.err);
+    }
+  });
+  int status = 0;
+  for (const Report& r : reports) {
+    std::cout << r.out.str();
+    std::cerr << r.err.str();
+    status = std::max(status, r.status);
+  }
+  return status;
+}
+
+/// `rollkin solve`: one scene, or several (solve_scenes).
+int run_solve(const SolveOptions& o) {
+  if (o.scenes.size() > 1) return solve_scenes(o);
+  SolveOptions one = o;
+  one.sweep.scene = o.scenes.front();
+  return solve_scene(one, std::cout, std::cerr);
 }
 
 
@@ -614,16 +705,8 @@ int run_reference(const ReferenceOptions& o) {
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
   const Mechanism<double>& m = scene.mechanism;
-  const bool decimal = scene.angle_unit == io::AngleUnit::Degree || m.variables[sw.variable].kind != ParamKind::Angle;
-  ReferenceSweep ref;
   g_doing = "computing the reference sweep in MPFR";
-  if (decimal) {  // the file's decimal input values, exactly (-50 is -50 degrees, not the nearest double)
-    std::vector<std::string> values;
-    for (double v : io::sweep_values(sw)) values.push_back(fmt(v, 17));
-    ref = reference_sweep_decimal(m, scene.guess, scene.held, sw.driver, values, o.digits);
-  } else {
-    ref = reference_sweep(m, scene.guess, scene.held, sw.driver, run.inputs, o.digits);
-  }
+  const ReferenceSweep ref = io::scene_reference(scene, sw, o.digits);
   g_doing = "writing the output file";
   run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
   run.outputs.commit();
@@ -795,6 +878,27 @@ std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command
   return {};
 }
 
+/// Inside a catch block: the message for the exception being handled (other than a UsageError) on `err`, and
+/// the exit status: 3 out of memory, 2 anything else (bad input, an output that cannot be written).
+int error_status(std::ostream& err) {
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    err << "rollkin: out of memory while " << g_doing
+        << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
+    return 3;
+  } catch (const InputError& e) {
+    err << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "rollkin: error: " << e.what() << "\n";
+    return 2;
+  } catch (...) {
+    err << "rollkin: unexpected error\n";
+    return 2;
+  }
+}
+
 /// "rollkin: <what is wrong>" and where to read what is expected; exit status 2.
 int usage_error(const std::string& what, const CLI::App* command, const std::vector<Command>& commands) {
   std::cerr << "rollkin: " << what << "\n";
@@ -835,20 +939,9 @@ int main(int argc, char** argv) {
         return c.run();
       }
     return usage_error("missing command", nullptr, commands);
-  } catch (const std::bad_alloc&) {
-    std::cerr << "rollkin: out of memory while " << g_doing
-              << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
-    return 3;
   } catch (const UsageError& e) {
     return usage_error(e.what(), chosen, commands);
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "rollkin: error: " << e.what() << "\n";
-    return 2;
   } catch (...) {
-    std::cerr << "rollkin: unexpected error\n";
-    return 2;
+    return error_status(std::cerr);
   }
 }

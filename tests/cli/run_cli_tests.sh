@@ -58,8 +58,9 @@ run reference "$EX/paper_fourbar.json" --csv r.csv --plot r.svg
 check "reference --plot: unknown option (reference writes a CSV only)" $([ "$rc" -eq 2 ] && grep -q '"--plot"' err.txt && [ ! -e r.csv ]; echo $?)
 run solve
 check "solve without a scene: exit 2, says SCENE is required" $([ "$rc" -eq 2 ] && grep -q "SCENE is required" err.txt; echo $?)
-run solve "$EX/paper_fourbar.json" "$EX/cycloid.json"
-check "two scene files: exit 2, names the second" $([ "$rc" -eq 2 ] && grep -q 'unexpected argument ".*cycloid.json"' err.txt; echo $?)
+run reference "$EX/paper_fourbar.json" "$EX/cycloid.json" --csv two.csv
+check "reference with two scene files: exit 2, names the second (solve takes several: --jobs below)" \
+  $([ "$rc" -eq 2 ] && grep -q 'unexpected argument ".*cycloid.json"' err.txt && [ ! -e two.csv ]; echo $?)
 for bad in "--step 1x" "--from nan" "--to inf" "--step ''" "--from 1e999"; do
   eval run solve "\"$EX/paper_fourbar.json\"" $bad --csv num.csv
   check "solve $bad: exit 2, names the option and expects a number" \
@@ -247,6 +248,33 @@ check "--interference reports the penetration range predicted in closed form (ex
   $([ "$rc" -eq 1 ] && grep -q "penetration between 'ground.kerb' and 'disk.rim' for S.s $range" err.txt; echo $?)
 run solve "$EX/paper_fourbar.json" --interference
 check "--interference on the paper example finds nothing (exit 0)" $([ "$rc" -eq 0 ] && [ ! -s err.txt ]; echo $?)
+
+# ---- several scenes at once (--jobs) -----------------------------------------------------------------
+mkdir -p jobs
+for s in paper_fourbar antiparallelogram elliptical_gears; do
+  "$BIN" solve "$EX/$s.json" --csv "jobs/alone_$s.csv" >/dev/null 2>&1
+done
+run solve "$EX/paper_fourbar.json" "$EX/antiparallelogram.json" "$EX/elliptical_gears.json" --csv 'jobs/{scene}.csv' --jobs 2
+check "--jobs 2 on three scenes: each CSV equals the scene solved alone; exit 1 (the anti-parallelogram's singular poses)" \
+  $([ "$rc" -eq 1 ] && cmp -s jobs/paper_fourbar.csv jobs/alone_paper_fourbar.csv &&
+    cmp -s jobs/antiparallelogram.csv jobs/alone_antiparallelogram.csv &&
+    cmp -s jobs/elliptical_gears.csv jobs/alone_elliptical_gears.csv; echo $?)
+check "--jobs: the summaries in the order the scenes were given" \
+  $([ "$(cut -d: -f1 out.txt | tr '\n' ' ')" = "paper_fourbar.json antiparallelogram.json elliptical_gears.json " ]; echo $?)
+run solve "$EX/paper_fourbar.json" "$EX/cycloid.json" --csv jobs/one.csv
+check "several scenes, an output without {scene}: exit 2, names the option, nothing written" \
+  $([ "$rc" -eq 2 ] && grep -q -- "--csv 'jobs/one.csv'.*{scene}" err.txt && [ ! -e jobs/one.csv ]; echo $?)
+run solve "$EX/paper_fourbar.json" jobs/missing.json "$EX/cycloid.json" --csv 'jobs/m_{scene}.csv'
+check "several scenes, one missing: exit 2, it is named, the others are written" \
+  $([ "$rc" -eq 2 ] && grep -q "missing.json: cannot open" err.txt && [ -f jobs/m_paper_fourbar.csv ] &&
+    [ -f jobs/m_cycloid.csv ] && [ ! -e jobs/m_missing.csv ]; echo $?)
+cp "$EX/cycloid.json" jobs/cycloid.json
+before=$(cksum < jobs/cycloid.json)
+run solve "$EX/paper_fourbar.json" jobs/cycloid.json --csv 'jobs/{scene}.json'
+check "several scenes, an output that is one of the scenes: exit 2, the scene untouched, nothing written" \
+  $([ "$rc" -eq 2 ] && [ "$(cksum < jobs/cycloid.json)" = "$before" ] && [ ! -e jobs/paper_fourbar.json ]; echo $?)
+run solve "$EX/paper_fourbar.json" "$EX/cycloid.json" --jobs -1
+check "--jobs -1: exit 2, names the option" $([ "$rc" -eq 2 ] && grep -q -- "--jobs" err.txt; echo $?)
 
 # ---- reference: the same sweep in MPFR ---------------------------------------------------------------
 run reference "$EX/paper_fourbar.json" --from -50 --to 100 --step 25 --csv ref.csv

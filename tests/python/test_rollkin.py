@@ -249,7 +249,7 @@ def test_dict_scene_with_a_samples_contour_equals_the_cli_on_the_same_file(tmp_p
     cams = [c for l in doc["links"] for c in l.get("contours", []) if c["type"] == "samples"]
     assert len(cams) == 1 and len(cams[0]["points"]) == 72
     written = tmp_path / "cam_samples.json"
-    written.write_text(json.dumps(doc))
+    written.write_text(json.dumps(scene.document()))  # the document holds the points as lists (doc: the array)
     header, rows, _ = cli_csv(written, 0, 360, 10, tmp_path)
     table = scene.solve(0, 360, 10)
     assert_table_equals_csv(table, header, rows)
@@ -262,7 +262,14 @@ def test_samples_checks_its_array():
     with pytest.raises(ValueError, match="row 2"):
         rollkin.samples(np.array([[0, 0], [1, 0], [np.nan, 1], [0, 1.0]]))
     c = rollkin.samples(np.asfortranarray(np.arange(8.0).reshape(4, 2)), name="p", smoothing=0.0)
-    assert c["points"] == [(0.0, 1.0), (2.0, 3.0), (4.0, 5.0), (6.0, 7.0)] and c["smoothing"] == 0.0
+    assert np.array_equal(c["points"], [(0.0, 1.0), (2.0, 3.0), (4.0, 5.0), (6.0, 7.0)]) and c["smoothing"] == 0.0
+    xy = np.arange(8.0).reshape(4, 2)
+    assert rollkin.samples(xy)["points"] is xy  # a contiguous float64 array is taken as it is, not copied
+    with pytest.raises(rollkin.InputError) as info:  # a value that went bad after samples() checked it
+        doc, _ = sampled_cam_scene()
+        doc["links"][1]["contours"][0]["points"] = np.array([[0.0, 0.0], [1.0, np.inf], [0.0, 1.0]])
+        rollkin.scene(doc, name="mine")
+    assert info.value.location == "links[1].contours[0].points[1][1]"
 
 
 # ---- solve_many ----------------------------------------------------------------------------------------------
@@ -314,9 +321,13 @@ def test_a_variant_that_cannot_assemble_does_not_stop_the_batch():
     results = rollkin.solve_many(batch, -50, 100, 1, threads=2)
     assert len(results) == len(batch)
     bad = results[2]
-    assert list(bad) == list(results[0])  # the same columns
+    assert [k for k in bad if k != "error"] == list(results[0])  # the same columns, and the reason
+    with pytest.raises(rollkin.InputError) as info:
+        broken.solve(-50, 100, 1)
+    assert bad["error"] == str(info.value) and "cannot be assembled" in bad["error"]
+    assert "error" not in results[0]
     assert set(bad["status"]) == {"cannot_assemble"} and len(bad["status"]) == 151
-    assert all(np.isnan(bad[k]).all() for k in bad if k not in ("status", "O_A.theta2"))
+    assert all(np.isnan(bad[k]).all() for k in bad if k not in ("status", "O_A.theta2", "error"))
     assert np.array_equal(bad["O_A.theta2"], np.arange(-50.0, 101.0))
     assert set(results[0]["status"]) == {"ok"}
     for s, r in zip(batch, results):
@@ -418,23 +429,74 @@ def test_fit_profile_recovers_the_design():
 
 def test_design_study_on_dask_equals_the_same_variants_solved_here(tmp_path):
     pytest.importorskip("dask.distributed")
-    out = tmp_path / "study.csv"
-    proc = run_example("design_study.py", "--out", str(out), "--grid", "3", "--workers", "1", "--chunk", "4")
+    out = tmp_path / "study"
+    proc = run_example("design_study.py", "--variants", "27", "--design", "grid", "--workers", "1", "--out", str(out))
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    with open(out, newline="") as f:
+    with open(out / "results.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    assert len(rows) == 9
+    assert len(rows) == 27 and (out / "study.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     base = rollkin.load_scene(PAPER)
     for r in rows:
-        a, x = float(r["a"]), float(r["pivot_x"])
-        t = base.modified({"links[1].contours[0].a": a, "pairs[3].at[0].x": x}).solve(analysis=True)
+        t = base.modified({"links[1].contours[0].a": float(r["a"]), "links[2].contours[0].radius": float(r["radius3"]),
+                           "pairs[3].at[0].x": float(r["pivot_x"])}).solve(analysis=True)
         ok = t["status"] == "ok"
         assert int(r["solved"]) == ok.sum() and int(r["poses"]) == len(ok)
         assert r["first_problem"] == next((s for s in t["status"] if s != "ok"), "")
-        swing = t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
-        assert float(r["swing_deg"]) == swing
+        assert float(r["swing_deg"]) == t["link4.angle"][ok].max() - t["link4.angle"][ok].min()
         assert float(r["max_pressure_angle_B_deg"]) == np.nanmax(t["B.pressure_angle"][ok])
+        assert float(r["worst_residual"]) == t["residual"][ok].max()
+        first_break = len(ok) if ok.all() else int(np.argmin(ok))
+        assert float(r["reached_to_deg"]) == t["O_A.theta2"][first_break - 1]
     assert {r["first_problem"] for r in rows} >= {"", "domain_exit"}  # the grid spans both outcomes
+    assert len({(r["a"], r["radius3"], r["pivot_x"]) for r in rows}) == 27
+    # A file where the directory should be: refused, the file untouched.
+    blocker = tmp_path / "file"
+    blocker.write_text("mine")
+    proc = run_example("design_study.py", "--variants", "2", "--workers", "1", "--out", str(blocker))
+    assert proc.returncode == 2 and "is a file" in proc.stderr and blocker.read_text() == "mine"
+
+
+def test_design_study_on_a_running_cluster_by_its_address(tmp_path):
+    # A scheduler and a worker started as separate processes, as on a cluster (docs/python.md); the study is
+    # given only the scheduler's address and must give what the LocalCluster run gives.
+    pytest.importorskip("dask.distributed")
+    info = tmp_path / "scheduler.json"
+    common = ["--no-dashboard"]
+    scheduler = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1",
+                                  "--port", "0", "--scheduler-file", str(info), *common],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    worker = None
+    try:
+        deadline = time.monotonic() + 60
+        while not info.exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
+        address = json.loads(info.read_text())["address"]
+        worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address, "--nthreads", "1",
+                                   *common], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=dict(os.environ))
+        remote = run_example("design_study.py", "--variants", "12", "--out", str(tmp_path / "remote"), "--scheduler",
+                             address)
+        assert remote.returncode == 0, remote.stdout + remote.stderr
+    finally:
+        for p in (worker, scheduler):
+            if p is not None:
+                p.terminate()
+                p.wait(timeout=30)
+    local = run_example("design_study.py", "--variants", "12", "--workers", "1", "--out", str(tmp_path / "local"))
+    assert local.returncode == 0, local.stdout + local.stderr
+    assert (tmp_path / "remote" / "results.csv").read_text() == (tmp_path / "local" / "results.csv").read_text()
+    assert len((tmp_path / "remote" / "results.csv").read_text().splitlines()) == 13
+
+
+def test_latin_hypercube_has_one_point_in_every_slice():
+    sys.path.insert(0, str(SRC / "examples" / "python"))
+    try:
+        import design_study
+    finally:
+        sys.path.pop(0)
+    points = design_study.design("lhs", 50, seed=3)
+    assert points.shape == (50, 3)
+    for axis in points.T:  # each of the 50 slices of [0, 1) holds exactly one point
+        assert sorted(np.floor(axis * 50).astype(int)) == list(range(50))
 
 
 def test_scenes_pickle_as_their_document(tmp_path):
@@ -448,3 +510,108 @@ def test_scenes_pickle_as_their_document(tmp_path):
         assert_tables_equal(pickle.loads(pickle.dumps(variant)).solve(), variant.solve())
     finally:
         os.chdir(cwd)
+
+
+# ---- nurbs, reference, centrodes and files (the rest of the CLI from Python) ----------------------------------
+
+def nurbs_rim_scene():
+    """The paper example with link4's rim (a circle of radius 4 about (2, 0)) given as the exact rational
+    quadratic NURBS circle, parameterised by arc length from its point at angle 0."""
+    doc = json.loads(PAPER.read_text())
+    w = math.sqrt(0.5)
+    corners = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)]
+    doc["links"][3]["contours"][0] = rollkin.nurbs(
+        4.0 * np.array(corners, dtype=float), degree=2, knots=[0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4],
+        weights=[1, w, 1, w, 1, w, 1, w, 1], name="rim", closed=True, parameter="arc_length", at={"x": 2, "y": 0})
+    doc["pairs"][2]["values"] = [-3, 4.0 * math.radians(117)]  # theta4 = 117 deg as arc length on the rim
+    return rollkin.scene(doc, name="nurbs_rim")
+
+
+def test_a_nurbs_circle_moves_the_mechanism_like_the_analytic_circle():
+    nurbs = nurbs_rim_scene().solve(-50, 100, 1)
+    circle = rollkin.load_scene(PAPER).solve(-50, 100, 1)
+    assert set(nurbs["status"]) == {"ok"}
+    for k in circle:
+        if k.startswith("link"):  # the links' poses: lengths 1e-12, angles 1e-10 deg
+            assert np.max(np.abs(nurbs[k] - circle[k])) <= (1e-10 if k.endswith("angle") else 1e-12), k
+    # Closed form of the contact parameter: arc length on a circle of radius 4 is 4 theta (mod the perimeter).
+    s = np.mod(nurbs["B.theta4"], 8 * math.pi)
+    assert np.max(np.abs(s - np.mod(4 * np.radians(circle["B.theta4"]), 8 * math.pi))) < 1e-9
+
+
+def test_nurbs_default_knots_and_checks():
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    c = rollkin.nurbs(square, degree=2)
+    assert list(c["knots"]) == [0, 0, 0, 1, 2, 2, 2] and "weights" not in c and c["type"] == "nurbs"
+    assert list(rollkin.nurbs(square, degree=1)["knots"]) == [0, 0, 1, 2, 3, 3]
+    with pytest.raises(ValueError, match="degree \\+ 1 = 5"):
+        rollkin.nurbs(square, degree=4)
+    with pytest.raises(ValueError, match="shape"):
+        rollkin.nurbs(np.zeros(6))
+    doc = json.loads(PAPER.read_text())
+    doc["links"][3]["contours"][0] = rollkin.nurbs(square, degree=2, knots=[0, 0, 1, 2, 2, 2], name="rim")
+    with pytest.raises(rollkin.InputError) as info:
+        rollkin.scene(doc)
+    assert info.value.location == "links[3].contours[0].knots" and "need points + degree + 1 = 7" in str(info.value)
+
+
+def test_reference_equals_the_clis_reference_csv_and_bounds_the_double_solve(tmp_path):
+    scene = rollkin.load_scene(PAPER)
+    ref = scene.reference(-50, 100, 5, digits=30)
+    out = tmp_path / "ref.csv"
+    proc = subprocess.run([CLI, "reference", str(PAPER), "--from", "-50", "--to", "100", "--step", "5", "--digits", "30",
+                           "--csv", str(out)], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    with open(out, newline="") as f:
+        rows = list(csv.reader(f))
+    assert list(ref) == rows[0]
+    for j, name in enumerate(rows[0]):  # the decimal strings, each rounded once to a double by Python's float()
+        want = [r[j] for r in rows[1:]]
+        assert list(ref[name]) == (want if name == "status" else [float(v) for v in want]), name
+    solved = scene.solve(-50, 100, 5)
+    for name in ref:
+        if name not in ("status", "residual"):
+            assert np.max(np.abs(solved[name] - ref[name])) < 1e-9, name
+    with pytest.raises(ValueError, match="30, 50 or 100"):
+        scene.reference(digits=40)
+
+
+def test_write_gives_the_clis_files_and_never_writes_over_an_input(tmp_path):
+    scene = rollkin.load_scene(PAPER)
+    mine = {k: tmp_path / ("py." + k) for k in ("csv", "plot", "draw", "animate")}
+    table = scene.write(-50, 100, 2, analysis=True, **{k: str(p) for k, p in mine.items()})
+    theirs = {k: tmp_path / ("cli." + k) for k in mine}
+    proc = subprocess.run([CLI, "solve", str(PAPER), "--from", "-50", "--to", "100", "--step", "2", "--analysis"] +
+                          sum([["--" + k, str(p)] for k, p in theirs.items()], []), capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    for k in mine:
+        assert mine[k].read_bytes() == theirs[k].read_bytes(), k
+    header, rows, _ = cli_csv(PAPER, -50, 100, 2, tmp_path, "--analysis")
+    assert_table_equals_csv(table, header, rows)
+    # Refused before solving, nothing written: the scene file itself, a missing directory.
+    before = PAPER.read_bytes()
+    with pytest.raises(rollkin.OutputError, match="input file"):
+        scene.modified({"links[1].contours[0].a": 0.6}).write(csv=str(PAPER))
+    assert PAPER.read_bytes() == before
+    with pytest.raises(OSError, match="no_such_dir"):
+        scene.write(csv=str(tmp_path / "new.csv"), plot=str(tmp_path / "no_such_dir" / "x.svg"))
+    assert not (tmp_path / "new.csv").exists()
+
+
+def test_centrodes_of_the_anti_parallelogram_are_the_ellipses_and_the_clis_dxf(tmp_path):
+    scene = rollkin.load_scene(SRC / "examples" / "antiparallelogram.json")
+    c = scene.centrodes("crank", "follower", 0, 360, 0.5, dxf=str(tmp_path / "py.dxf"))
+    assert c["finite"].all() and c["a"].shape == (721, 2) and set(c["status"]) <= {"ok", "singular"}
+    ax, ay = c["a"].T  # foci (0, 0) and (0, 2), major axis 4 (the CLI test's closed form)
+    assert np.max(np.abs(np.hypot(ax, ay) + np.hypot(ax, ay - 2) - 4)) < 1e-8
+    bx, by = c["b"].T  # foci (0, 0) and (2, 0)
+    assert np.max(np.abs(np.hypot(bx, by) + np.hypot(bx - 2, by) - 4)) < 1e-8
+    proc = subprocess.run([CLI, "centrodes", str(SRC / "examples" / "antiparallelogram.json"), "--links", "crank",
+                           "follower", "--out", str(tmp_path / "cli"), "--step", "0.5", "--dxf", str(tmp_path / "cli.dxf")],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "py.dxf").read_bytes() == (tmp_path / "cli.dxf").read_bytes()
+    points = np.loadtxt(tmp_path / "cli.crank.txt", skiprows=3)  # two comment lines, the header "x y"
+    assert np.max(np.abs(points - c["a"])) < 1e-12
+    with pytest.raises(ValueError, match="no link \"nope\""):
+        scene.centrodes("crank", "nope")

@@ -3,7 +3,7 @@
 // contact parameters from the user, and to flag "contours penetrate" or "touch at a second point" along a
 // sweep.
 //
-// Part of the CGAL boundary: plain types here, CGAL (EPICK, AABB tree, box_intersection_d) in
+// Part of the CGAL boundary: plain types here, CGAL (EPICK exact predicates, AABB tree) in
 // src/geometry/contact.cpp. Polylines follow the sample convention of validation.hpp: segment i joins
 // sample i to sample i + 1; a closed polyline has the implicit closing segment n - 1 -> 0 and does not
 // repeat its first sample.
@@ -38,7 +38,7 @@ struct ContactCandidate {
 };
 
 /// Closest points of two polylines (each at least 2 samples; closed ones at least 3). Crossings are found
-/// as in check_interference (box intersection, exact do_intersect). Without a crossing the minimum distance
+/// as in check_interference (circle hierarchies, exact do_intersect). Without a crossing the minimum distance
 /// between two segments is attained at an endpoint of one of them, so it is the least distance from a
 /// sample of either polyline to the other one: CGAL AABB-tree closest-point queries, each hinted with the
 /// previous answer, samples skipped when the triangle inequality shows they cannot beat the best so far.
@@ -69,11 +69,48 @@ struct InterferenceReport {
   std::size_t zone_count() const { return zones.size(); }
 };
 
-/// Crossings and touching zones of two polylines. Segment pairs closer than touch_tol (distance <=
-/// touch_tol) are found with CGAL::box_intersection_d on segment boxes grown by touch_tol, then measured
-/// with EPICK squared_distance; crossings are decided by the exact predicate do_intersect. Two near pairs
-/// belong to the same zone when they share a segment or their segments are consecutive on a or on b
-/// (union-find), so a smooth tangential contact is one zone however finely it is sampled.
+/// The segments of one polyline in a binary hierarchy of bounding circles over runs of consecutive
+/// segments, built once in the polyline's own frame (a link's). A rigid motion moves a circle without
+/// changing its radius, so one hierarchy serves every pose of its link. Throws std::invalid_argument for too
+/// few samples (at least 2; closed: 3).
+class SegmentHierarchy {
+ public:
+  struct Node {
+    Vec2<double> centre = Vec2<double>::Zero();
+    double radius = 0;               // every segment of the run lies in the circle
+    std::size_t first = 0, last = 0;  // the run: segments first .. last - 1
+    int left = -1, right = -1;        // children (-1: a leaf)
+  };
+
+  SegmentHierarchy(std::vector<Vec2<double>> points, bool closed);
+
+  const std::vector<Vec2<double>>& points() const { return points_; }
+  bool closed() const { return closed_; }
+  std::size_t segments() const { return closed_ ? points_.size() : points_.size() - 1; }
+  const std::vector<Node>& nodes() const { return nodes_; }  // nodes()[0] is the root
+  /// Largest absolute coordinate of the points (the scale of the rounding margin).
+  double extent() const { return extent_; }
+
+ private:
+  int build(std::size_t first, std::size_t last);
+  std::vector<Vec2<double>> points_;
+  bool closed_;
+  std::vector<Node> nodes_;
+  double extent_ = 0;
+};
+
+/// Crossings and touching zones of two polylines given in their own frames and placed in the world by g_a
+/// and g_b (reported in world coordinates). Segment pairs closer than touch_tol (distance <= touch_tol) are
+/// found by descending both hierarchies together in a's frame (a pair of circles farther apart than
+/// touch_tol, plus a rounding margin, is skipped with all its segments; b's circles and the segments of the
+/// leaves that come near are moved by g_a^-1 g_b), then measured with EPICK squared_distance; crossings are
+/// decided by the exact predicate do_intersect on the segments as placed. Two near pairs belong to the same
+/// zone when they share a segment or their segments are consecutive on a or on b (union-find), so a smooth
+/// tangential contact is one zone however finely it is sampled.
+InterferenceReport check_interference(const SegmentHierarchy& a, const SE2<double>& g_a, const SegmentHierarchy& b,
+                                      const SE2<double>& g_b, double touch_tol);
+
+/// The same for two polylines already in one frame.
 InterferenceReport check_interference(const std::vector<Vec2<double>>& a, bool a_closed,
                                       const std::vector<Vec2<double>>& b, bool b_closed, double touch_tol);
 

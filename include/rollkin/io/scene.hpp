@@ -17,6 +17,7 @@
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/kinematics.hpp"
+#include "rollkin/reference.hpp"
 #include "rollkin/solve/sweep_grid.hpp"
 
 #include <optional>
@@ -67,6 +68,11 @@ std::optional<Sweep> requested_sweep(const Scene& scene, std::optional<double> f
 /// The error for a scene whose mechanism cannot be assembled (SolveStatus::CannotAssemble, `detail` from the
 /// assembly's report): a problem of the scene (sizes, frames, values), not a motion limit; named at "pairs".
 InputError assembly_error(const Scene& scene, const std::string& detail);
+
+/// The reference sweep (reference.hpp) of `sweep` on the scene's mechanism at `digits` decimal digits (30, 50,
+/// 100). An input in degrees or in length units is taken as the decimal text of its file values ("-50" is
+/// exactly -50 degrees, not the double nearest -50 pi/180); an input in radians as the doubles of the grid.
+ReferenceSweep scene_reference(const Scene& scene, const Sweep& sweep, int digits);
 
 /// Reads a scene file as a JSON document (io/json_document.hpp), without building the scene: the errors of
 /// load_scene about the file itself and its JSON syntax. load_scene(p) is build_scene(read_scene_document(p), p).

@@ -1,10 +1,12 @@
 // Interference along a sweep: do contours of different links cross, or touch somewhere besides the contact
 // the mechanism models? Opt-in: nothing here runs unless the caller asks (sweep() does not include it).
 //
-// For every solved pose of a SweepResult the link poses are computed (evaluate_pairs, link_poses), every
-// contour is sampled (samples_per_contour points, equally spaced in its parameter, once, in its link frame)
-// and placed in the world, and each contour pair is handed to geometry::check_interference (the CGAL
-// boundary: box intersection, exact crossing predicate; geometry/contact.hpp). Of the zones where two polylines
+// Every contour is sampled once (samples_per_contour points, equally spaced in its parameter, in its link
+// frame) into a hierarchy of bounding circles (geometry::SegmentHierarchy). For every solved pose of a
+// SweepResult the link poses are computed (evaluate_pairs, link_poses) and each contour pair is handed with
+// its two link poses to geometry::check_interference (the CGAL boundary; geometry/contact.hpp), which moves
+// only the circles it visits: pairs of contours far apart cost one circle test, and near ones the segments
+// near each other (exact crossing predicate). Of the zones where two polylines
 // come within the touch tolerance, the one at a contact pair's own contact point is the modelled contact
 // and is not reported; any other zone is a finding: Penetration if the polylines cross there, SecondTouch
 // otherwise. Optionally each contact pair's curvatures are checked too: with both contours material-on-left
@@ -22,6 +24,9 @@
 #include "rollkin/geometry/contact.hpp"
 #include "rollkin/solve/continuation.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -74,6 +79,15 @@ struct PoseInterference {
 
 struct SweepInterference {
   double touch_tolerance = 0;                 // the tolerance actually used
+  /// Per contour (0 for one not checked): the largest distance of the curve from its chords, measured at the
+  /// quarter points of every chord (the sagitta; exact at the midpoint for a circle's chords). Findings and
+  /// touches are decided on the chords, so they are exact to within this of the curves.
+  std::vector<double> chord_error;
+  double max_chord_error() const {
+    double e = 0;
+    for (double c : chord_error) e = std::max(e, c);
+    return e;
+  }
   std::vector<std::pair<int, int>> contour_pairs;  // the pairs actually checked
   std::vector<PoseInterference> poses;        // one per pose of the sweep, same order
   bool any() const {
@@ -96,6 +110,26 @@ template <class S> std::vector<Vec2<double>> contour_samples(const Contour<S>& c
     pts.emplace_back(to_double(p.x()), to_double(p.y()));
   }
   return pts;
+}
+
+/// The largest distance of contour c from the chords of its samples (contour_samples), measured at the
+/// quarter points of each chord's parameter interval.
+template <class S> double chord_error(const Contour<S>& c, const std::vector<Vec2<double>>& pts) {
+  const Domain<S> d = c.domain();
+  const std::size_t n = pts.size(), segments = d.closed ? n : n - 1;
+  const double lo = to_double(d.lo), span = to_double(d.hi - d.lo) / static_cast<double>(d.closed ? n : n - 1);
+  double worst = 0;
+  for (std::size_t k = 0; k < segments; ++k) {
+    const Vec2<double>& p = pts[k];
+    const Vec2<double> chord = pts[(k + 1) % n] - p;
+    for (double f : {0.25, 0.5, 0.75}) {
+      const Vec2<S> q = c.jet(S(lo + (static_cast<double>(k) + f) * span), 0).p;
+      const Vec2<double> v = Vec2<double>(to_double(q.x()), to_double(q.y())) - p;
+      const double len = chord.norm();
+      worst = std::max(worst, len > 0 ? std::abs(v.x() * chord.y() - v.y() * chord.x()) / len : v.norm());
+    }
+  }
+  return worst;
 }
 
 /// Segment of the sampled polyline of contour c holding parameter u.
@@ -122,26 +156,19 @@ inline bool near_segment(const std::vector<std::size_t>& sorted, std::size_t k, 
 /// Findings at one pose q of m (all variables, as solved).
 template <class S> std::vector<InterferenceFinding> check_pose_interference(
     const Mechanism<S>& m, const VectorX<S>& q, const InterferenceCheck& opt,
-    const std::vector<std::pair<int, int>>& contour_pairs, const std::vector<std::vector<Vec2<double>>>& local,
+    const std::vector<std::pair<int, int>>& contour_pairs, const std::vector<std::optional<geometry::SegmentHierarchy>>& local,
     double touch_tol, KinematicsData<S>& d) {
   evaluate_pairs<S>(m, q, nullptr, 2, d);
   const std::vector<SE2<S>> pose = link_poses(m, d);
   std::vector<SE2<double>> world(pose.size());
   for (std::size_t i = 0; i < pose.size(); ++i) world[i] = pose[i].template cast<double>();
   std::vector<InterferenceFinding> out;
-  std::vector<std::vector<Vec2<double>>> placed(m.contours.size());
-  auto placed_of = [&](int c) -> const std::vector<Vec2<double>>& {
-    if (placed[c].empty()) {
-      const SE2<double>& g = world[m.contours[c].link()];
-      for (const auto& p : local[c]) placed[c].push_back(g.act(p));
-    }
-    return placed[c];
-  };
   const int n = opt.samples_per_contour;
   for (const auto& [ca, cb] : contour_pairs) {
-    const bool a_closed = m.contours[ca].domain().closed, b_closed = m.contours[cb].domain().closed;
-    const geometry::InterferenceReport rep =
-        geometry::check_interference(placed_of(ca), a_closed, placed_of(cb), b_closed, touch_tol);
+    const geometry::SegmentHierarchy &ha = *local[ca], &hb = *local[cb];
+    const bool a_closed = ha.closed(), b_closed = hb.closed();
+    const geometry::InterferenceReport rep = geometry::check_interference(
+        ha, world[m.contours[ca].link()], hb, world[m.contours[cb].link()], touch_tol);
     // Own contacts: segments of the contact points of every contact pair between these two contours.
     std::vector<std::pair<std::size_t, std::size_t>> own;  // (segment on ca, segment on cb)
     int own_pair = -1;
@@ -157,7 +184,7 @@ template <class S> std::vector<InterferenceFinding> check_pose_interference(
       else continue;
       own_pair = static_cast<int>(k);
     }
-    const std::size_t na = local[ca].size(), nb = local[cb].size();
+    const std::size_t na = ha.points().size(), nb = hb.points().size();
     for (const geometry::ContactZone& z : rep.zones) {
       bool is_own = false;
       for (const auto& [sa, sb] : own)
@@ -217,10 +244,15 @@ template <class S> SweepInterference check_interference(const Mechanism<S>& m, c
       out.contour_pairs.emplace_back(a, b);
     }
   }
-  std::vector<std::vector<Vec2<double>>> local(m.contours.size());
+  std::vector<std::optional<geometry::SegmentHierarchy>> local(m.contours.size());
+  out.chord_error.assign(m.contours.size(), 0.0);
   for (const auto& [a, b] : out.contour_pairs)
-    for (int c : {a, b})
-      if (local[c].empty()) local[c] = detail::contour_samples(m.contours[c], opt.samples_per_contour);
+    for (int c : {a, b}) {
+      if (local[c]) continue;
+      std::vector<Vec2<double>> pts = detail::contour_samples(m.contours[c], opt.samples_per_contour);
+      out.chord_error[c] = detail::chord_error(m.contours[c], pts);
+      local[c].emplace(std::move(pts), m.contours[c].domain().closed);
+    }
   KinematicsData<S> d(m);
   out.poses.resize(sweep.poses.size());
   for (std::size_t i = 0; i < sweep.poses.size(); ++i) {

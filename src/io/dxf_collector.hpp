@@ -1,0 +1,207 @@
+// The DXF reader's libdxflib adapter (internal to src/io/dxf.cpp): collects the entities of the ENTITIES
+// section with their type, handle and layer (from processCodeValuePair, which libdxflib calls for every group
+// before interpreting it), checks group values and the counts libdxflib sizes its arrays with, and keeps the
+// geometry libdxflib reports.
+#pragma once
+
+#include "dxf_detail.hpp"
+
+#include <dxflib/dl_creationadapter.h>
+#include <dxflib/dl_dxf.h>
+
+#include <string>
+#include <vector>
+
+namespace rollkin::dxf {
+
+class Collector : public DL_CreationAdapter {
+ public:
+  Collector(std::string file, std::size_t pairs) : file_(std::move(file)), pairs_(pairs) {}
+
+  std::vector<RawEntity> entities;
+  bool has_insunits = false;
+  int insunits = 0;
+
+  void processCodeValuePair(unsigned int code, const std::string& value) override {
+    ++pair_;
+    const std::size_t line = 2 * pair_ - 1;
+    if (code == 0) {
+      entity_type_ = trim(value);
+      return entity_start(entity_type_, line);
+    }
+    // (In ENTITIES count_value checks them too, naming the entity by its handle.)
+    if (section_ != "ENTITIES" && sizes_an_array(entity_type_, code)) bounded_count(code, value, line);
+    if (code == 2 && expect_section_name_) {
+      section_ = trim(value);
+      expect_section_name_ = false;
+      return;
+    }
+    if (section_ == "HEADER") {
+      if (code == 9) header_variable_ = trim(value);
+      if (header_variable_ == "$INSUNITS" && code == 70) {
+        long u = 0;
+        if (!parse_long(value, u)) throw InputError(file_, "line " + std::to_string(line + 1), "$INSUNITS \"" + value + "\" is not an integer");
+      }
+      return;
+    }
+    if (section_ != "ENTITIES" || current_ < 0) return;
+    RawEntity& e = entities[static_cast<std::size_t>(current_)];
+    if ((real_code(code) && !parse_real(value)) || (int_code(code) && !parse_long(value, dummy_)))
+      throw InputError(file_, "line " + std::to_string(line + 1),
+                       e.label() + ": group " + std::to_string(code) + " value \"" + trim(value).substr(0, 40) + "\" is not " +
+                           (real_code(code) ? "a finite number" : "an integer"));
+    if (in_sequence_) return;  // VERTEX, ATTRIB, SEQEND of a POLYLINE or INSERT: libdxflib reports them
+    // libdxflib stores an LWPOLYLINE's vertices and bulges in an array sized by group 90 and indexed from the
+    // last group 10: a vertex before the count, or a bulge before the first vertex, would be written outside it.
+    if (e.type == "LWPOLYLINE" && (code == 10 || code == 42) && (e.g90 < 0 || (code == 42 && e.n10 == 0)))
+      throw InputError(file_, "line " + std::to_string(line), e.label() + ": group " + std::to_string(code) +
+                                                                  (code == 10 ? " (vertex) before the vertex count (group 90)"
+                                                                              : " (bulge) before the first vertex (group 10)"));
+    switch (code) {
+      case 5: e.handle = trim(value); break;
+      case 8: e.layer = trim(value); break;
+      case 10: ++e.n10; break;
+      case 11: ++e.n11; break;
+      case 40: ++e.n40; break;
+      case 41: ++e.n41; break;
+      case 72: e.g72 = count_value(e, code, value, line); break;
+      case 73: e.g73 = count_value(e, code, value, line); break;
+      case 74: e.g74 = count_value(e, code, value, line); break;
+      case 90: e.g90 = count_value(e, code, value, line); break;
+      case 76: if (e.type == "LEADER") count_value(e, code, value, line); break;  // libdxflib: new double[3 n]
+      default: break;
+    }
+  }
+
+  void setVariableInt(const std::string& key, int value, int) override {
+    if (key == "$INSUNITS") {
+      has_insunits = true;
+      insunits = value;
+    }
+  }
+
+  void addLine(const DL_LineData& d) override {
+    if (RawEntity* e = target()) e->v = {d.x1, d.y1, d.z1, d.x2, d.y2, d.z2, 0, 0, 0};
+  }
+  void addArc(const DL_ArcData& d) override {
+    if (RawEntity* e = target()) e->v = {d.cx, d.cy, d.cz, d.radius, d.angle1, d.angle2, 0, 0, 0};
+  }
+  void addCircle(const DL_CircleData& d) override {
+    if (RawEntity* e = target()) e->v = {d.cx, d.cy, d.cz, d.radius, 0, 0, 0, 0, 0};
+  }
+  void addEllipse(const DL_EllipseData& d) override {
+    if (RawEntity* e = target()) e->v = {d.cx, d.cy, d.cz, d.mx, d.my, d.mz, d.ratio, d.angle1, d.angle2};
+  }
+  void addPolyline(const DL_PolylineData& d) override {
+    if (RawEntity* e = target()) e->flags = d.flags;
+  }
+  void addVertex(const DL_VertexData& d) override {
+    if (RawEntity* e = target()) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
+  }
+  void addSpline(const DL_SplineData& d) override {
+    if (RawEntity* e = target()) {
+      e->degree = static_cast<int>(d.degree);
+      e->flags = d.flags;
+    }
+  }
+  void addControlPoint(const DL_ControlPointData& d) override {
+    if (RawEntity* e = target()) e->control.push_back({d.x, d.y, d.z, d.w});
+  }
+  void addKnot(const DL_KnotData& d) override {
+    if (RawEntity* e = target()) e->knots.push_back(d.k);
+  }
+
+ private:
+  /// The entity a callback belongs to: the one whose end (the next group 0) libdxflib is processing, when it
+  /// lies in the ENTITIES section; records that its geometry arrived and the extrusion libdxflib set for it.
+  RawEntity* target() {
+    if (target_ < 0) return nullptr;
+    RawEntity& e = entities[static_cast<std::size_t>(target_)];
+    e.delivered = true;
+    const double* dir = getExtrusion()->getDirection();
+    e.extrusion = {dir[0], dir[1], dir[2]};
+    return &e;
+  }
+
+  /// Groups from which libdxflib sizes an array (new double[k * count]) for the entity it is reading, in any
+  /// section: ENTITIES, BLOCKS or one it does not know (fuzz_dxf: a SPLINE in a misspelt section with
+  /// 1056964608 fit points overflowed the size).
+  static bool sizes_an_array(const std::string& type, unsigned code) {
+    return (type == "LWPOLYLINE" && code == 90) || (type == "SPLINE" && (code == 72 || code == 73 || code == 74)) ||
+           (type == "LEADER" && code == 76);
+  }
+
+  /// Such a count must be an integer between 0 and the number of groups in the file.
+  void bounded_count(unsigned code, const std::string& value, std::size_t line) const {
+    long n = 0;
+    if (!parse_long(value, n) || n < 0 || static_cast<std::size_t>(n) > pairs_)
+      throw InputError(file_, "line " + std::to_string(line + 1),
+                       entity_type_ + ": group " + std::to_string(code) + " count \"" + trim(value).substr(0, 40) +
+                           "\" is impossible (not an integer from 0 to the file's " + std::to_string(pairs_) + " groups)");
+  }
+
+  long count_value(const RawEntity& e, unsigned code, const std::string& value, std::size_t line) {
+    long n = 0;
+    parse_long(value, n);
+    if (n < 0 || static_cast<std::size_t>(n) > pairs_)
+      throw InputError(file_, "line " + std::to_string(line + 1),
+                       e.label() + ": group " + std::to_string(code) + " count " + std::to_string(n) +
+                           " is impossible (negative or more than the file's " + std::to_string(pairs_) + " groups)");
+    return n;
+  }
+
+  void entity_start(const std::string& type, std::size_t line) {
+    target_ = -1;
+    if (section_ == "ENTITIES" && current_ >= 0) {
+      const RawEntity& e = entities[static_cast<std::size_t>(current_)];
+      const bool owner = e.type == "POLYLINE" || e.type == "INSERT";
+      if (owner && (type == "VERTEX" || type == "ATTRIB" || type == "SEQEND")) {
+        target_ = current_;  // libdxflib completes the POLYLINE or the previous VERTEX now
+        in_sequence_ = true;
+        return;
+      }
+      check_counts(e);
+      target_ = current_;
+      current_ = -1;
+      in_sequence_ = false;
+    }
+    if (type == "SECTION") {
+      expect_section_name_ = true;
+      section_.clear();
+    } else if (type == "ENDSEC") {
+      section_.clear();
+    } else if (section_ == "ENTITIES") {
+      RawEntity e;
+      e.type = type;
+      e.line = line;
+      entities.push_back(e);
+      current_ = static_cast<long>(entities.size()) - 1;
+    }
+  }
+
+  /// The counts libdxflib sizes its arrays with must match the groups that follow (it keeps a missing count
+  /// from the previous entity and drops or zero-fills the difference).
+  void check_counts(const RawEntity& e) const {
+    auto fail = [&](const std::string& what) { throw InputError(file_, "line " + std::to_string(e.line), e.label() + ": " + what); };
+    auto declared = [](long g) { return g < 0 ? std::string("no count") : "a count of " + std::to_string(g); };
+    if (e.type == "LWPOLYLINE" && e.g90 != e.n10)
+      fail("group 90 gives " + declared(e.g90) + " vertices but " + std::to_string(e.n10) + " vertices (group 10) follow");
+    if (e.type == "SPLINE") {
+      if (e.g72 != e.n40) fail("group 72 gives " + declared(e.g72) + " knots but " + std::to_string(e.n40) + " knots (group 40) follow");
+      if (e.g73 != e.n10 && !(e.g73 < 0 && e.n10 == 0))
+        fail("group 73 gives " + declared(e.g73) + " control points but " + std::to_string(e.n10) + " (group 10) follow");
+      if (e.n41 != 0 && e.n41 != e.n10)
+        fail(std::to_string(e.n41) + " weights (group 41) for " + std::to_string(e.n10) + " control points; give one per point or none");
+      if (e.g74 >= 0 && e.g74 != e.n11)
+        fail("group 74 gives " + declared(e.g74) + " fit points but " + std::to_string(e.n11) + " (group 11) follow");
+    }
+  }
+
+  std::string file_;
+  std::size_t pairs_, pair_ = 0;
+  std::string section_, header_variable_, entity_type_;  // entity_type_: of the last group 0, any section
+  bool expect_section_name_ = false, in_sequence_ = false;
+  long current_ = -1, target_ = -1, dummy_ = 0;
+};
+
+}  // namespace rollkin::dxf

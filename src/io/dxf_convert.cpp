@@ -1,0 +1,201 @@
+// One DXF entity to exact Bezier segments (dxf_detail.hpp): lines, circular and elliptical arcs as rational
+// quadratics, polylines with bulges, SPLINEs as NURBS converted by knot insertion.
+#include "dxf_detail.hpp"
+
+#include "rollkin/io/units.hpp"
+#include "rollkin/profile/nurbs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace rollkin::dxf {
+
+Segment reversed(Segment s) {
+  std::reverse(s.points.begin(), s.points.end());
+  std::reverse(s.weights.begin(), s.weights.end());
+  return s;
+}
+
+namespace {
+
+// ---- conversion of one entity ------------------------------------------------------------------------------
+
+
+
+/// The unit circle arc from t0 to t1 (radians), exact rational quadratics, mapped by p -> c + p.x M + p.y m.
+std::vector<Segment> affine_arc(double t0, double t1, const V& c, const V& M, const V& m) {
+  std::vector<Segment> segs = BezierPath<double>::circle_arc(V(0, 0), 1.0, t0, t1).segments();
+  for (Segment& s : segs)
+    for (V& p : s.points) p = c + p.x() * M + p.y() * m;
+  return segs;
+}
+
+/// Angles within this fraction of a turn of a whole turn count as a whole turn (rounding of written values).
+constexpr double kTurnTolerance = 1e-12;
+
+bool full_turn(double sweep) { return sweep >= 2 * M_PI * (1 - kTurnTolerance); }
+
+/// Counter-clockwise sweep from `from` to `to`, in (0, turn]: reduced by fmod (no loop, whatever the values);
+/// a sweep of (nearly) zero or a whole turn is a whole turn.
+double ccw_sweep(double from, double to, double turn) {
+  double sweep = std::fmod(to - from, turn);
+  if (sweep <= turn * kTurnTolerance) sweep += turn;
+  return sweep;
+}
+
+class Converter {
+ public:
+  explicit Converter(std::string file) : file_(std::move(file)) {}
+
+  Piece convert(const RawEntity& e) const {
+    Piece piece;
+    piece.label = e.label();
+    check_extrusion(e);
+    if (e.type == "LINE") line(e, piece);
+    else if (e.type == "ARC" || e.type == "CIRCLE") arc(e, piece);
+    else if (e.type == "ELLIPSE") ellipse(e, piece);
+    else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE") polyline(e, piece);
+    else if (e.type == "SPLINE") spline(e, piece);
+    if (piece.segments.empty()) fail(e, "has no extent (zero length)");
+    return piece;
+  }
+
+ private:
+  [[noreturn]] void fail(const RawEntity& e, const std::string& what) const {
+    throw InputError(file_, "line " + std::to_string(e.line), e.label() + " " + what);
+  }
+
+  bool mirrored(const RawEntity& e) const { return e.extrusion[2] < 0; }
+
+  void check_extrusion(const RawEntity& e) const {
+    const auto& n = e.extrusion;
+    if (!(n[0] == 0 && n[1] == 0 && std::abs(n[2]) == 1))
+      fail(e, "has extrusion direction (" + number(n[0]) + ", " + number(n[1]) + ", " + number(n[2]) +
+                  "): only drawings in the XY plane, extrusion (0, 0, 1) or (0, 0, -1), are read");
+  }
+
+  /// OCS to WCS for extrusion (0, 0, -1): the arbitrary axis algorithm gives Ax = (-1, 0, 0), Ay = (0, 1, 0).
+  V ocs(const RawEntity& e, double x, double y) const { return mirrored(e) ? V(-x, y) : V(x, y); }
+
+  void line(const RawEntity& e, Piece& piece) const {
+    if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + number(e.v[2]) + " and " + number(e.v[5]) + ")");
+    const V a(e.v[0], e.v[1]), b(e.v[3], e.v[4]);
+    if (a == b) fail(e, "has zero length");
+    piece.segments.push_back({{a, b}, {}});
+  }
+
+  void arc(const RawEntity& e, Piece& piece) const {
+    const double r = e.v[3];
+    if (!(r > 0)) fail(e, "has radius " + number(r) + "; it must be positive");
+    double sweep = 2 * M_PI, t0 = 0;
+    if (e.type == "ARC") {
+      // DXF arcs run counter-clockwise from the start to the end angle; equal angles make a full circle.
+      t0 = deg_to_rad(std::fmod(e.v[4], 360.0));
+      sweep = deg_to_rad(ccw_sweep(e.v[4], e.v[5], 360.0));
+    }
+    const double x_sign = mirrored(e) ? -1 : 1;
+    piece.segments = affine_arc(t0, t0 + sweep, ocs(e, e.v[0], e.v[1]), V(x_sign * r, 0), V(0, r));
+    piece.closed = full_turn(sweep);
+  }
+
+  void ellipse(const RawEntity& e, Piece& piece) const {
+    const V c(e.v[0], e.v[1]), M(e.v[3], e.v[4]);
+    const double ratio = e.v[6];
+    if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + number(e.v[5]) + ")");
+    if (!(M.norm() > 0)) fail(e, "has a zero major axis");
+    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + number(ratio) + "; it must be in (0, 1]");
+    // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1).
+    const V m = mirrored(e) ? V(ratio * M.y(), -ratio * M.x()) : V(-ratio * M.y(), ratio * M.x());
+    const double t0 = std::fmod(e.v[7], 2 * M_PI);
+    const double sweep = ccw_sweep(e.v[7], e.v[8], 2 * M_PI);
+    piece.segments = affine_arc(t0, t0 + (full_turn(sweep) ? 2 * M_PI : sweep), c, M, m);
+    piece.closed = full_turn(sweep);
+  }
+
+  /// Bulge b from a to b_: arc of included angle 4 atan(b) (counter-clockwise for b > 0), centre on the chord's
+  /// perpendicular bisector at (1 - b^2) / (4 b) chord lengths to its left.
+  std::vector<Segment> bulge_arc(const V& a, const V& b_, double bulge) const {
+    const double angle = 4 * std::atan(bulge);
+    const V center = (a + b_) / 2 + perp(V(b_ - a)) * ((1 - bulge * bulge) / (4 * bulge));
+    const double r = (a - center).norm(), t0 = std::atan2(a.y() - center.y(), a.x() - center.x());
+    if (!std::isfinite(r) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
+      throw std::range_error("bulge " + number(bulge) + " gives no finite arc");
+    std::vector<Segment> segs = affine_arc(t0, t0 + angle, center, V(r, 0), V(0, r));
+    segs.front().points.front() = a;  // the vertices are the data: keep them exact
+    segs.back().points.back() = b_;
+    return segs;
+  }
+
+  void polyline(const RawEntity& e, Piece& piece) const {
+    if (e.type == "POLYLINE" && (e.flags & (16 | 64)))
+      fail(e, "is a polygon or polyface mesh (group 70 = " + std::to_string(e.flags) + "), not a curve");
+    if (e.type == "POLYLINE" && (e.flags & (2 | 4)))
+      fail(e, "is curve-fit or spline-fit (group 70 = " + std::to_string(e.flags) +
+                  "); its fitted shape is not stored exactly: convert it to a SPLINE in the CAD program");
+    const bool three_d = e.type == "POLYLINE" && (e.flags & 8);  // 3D polyline: WCS coordinates, no bulges
+    std::vector<Vertex> vs;
+    for (const Vertex& v : e.vertices) {
+      if (three_d && v.z != e.vertices.front().z) fail(e, "is a 3D polyline that leaves the XY plane");
+      if (vs.empty() || vs.back().x != v.x || vs.back().y != v.y) vs.push_back(v);
+      else vs.back().bulge = v.bulge;  // a repeated vertex: the bulge of the last copy leads on
+    }
+    const bool closed = (e.flags & 1) != 0;
+    if (closed && vs.size() > 1 && vs.front().x == vs.back().x && vs.front().y == vs.back().y) vs.pop_back();
+    const std::size_t n = vs.size(), pieces = closed ? n : n - 1;
+    if (n < 2) fail(e, "has fewer than two distinct vertices");
+    for (std::size_t i = 0; i < pieces; ++i) {
+      const Vertex& v = vs[i];
+      const Vertex& w = vs[(i + 1) % n];
+      const V a = three_d ? V(v.x, v.y) : ocs(e, v.x, v.y), b = three_d ? V(w.x, w.y) : ocs(e, w.x, w.y);
+      // Mirroring the OCS x axis reverses the sense of rotation, hence the bulge's sign.
+      const double bulge = three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge);
+      if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(i));
+      if (bulge == 0) {
+        piece.segments.push_back({{a, b}, {}});
+      } else {
+        std::vector<Segment> arc;
+        try {
+          arc = bulge_arc(a, b, bulge);
+        } catch (const std::range_error& ex) {
+          fail(e, std::string("at vertex ") + std::to_string(i) + ": " + ex.what());
+        }
+        for (Segment& s : arc) piece.segments.push_back(std::move(s));
+      }
+    }
+    piece.closed = closed;
+  }
+
+  void spline(const RawEntity& e, Piece& piece) const {
+    if (e.n10 == 0) {
+      if (e.n11 > 0)
+        fail(e, "has only fit points (" + std::to_string(e.n11) +
+                    "), no control points: a fit-point spline's shape depends on the CAD program's fitting; save it "
+                    "with control points (or convert it to a control-point spline) and export again");
+      fail(e, "has no control points");
+    }
+    Nurbs<double> c;
+    c.degree = e.degree;
+    c.knots = e.knots;
+    for (const auto& q : e.control) {
+      if (q[2] != e.control.front()[2]) fail(e, "has control points at different z: it is not in the XY plane");
+      c.points.emplace_back(q[0], q[1]);
+      if (e.n41 > 0) c.weights.push_back(q[3]);
+    }
+    try {
+      piece.segments = nurbs_to_bezier(c).segments;
+    } catch (const std::invalid_argument& ex) {
+      fail(e, std::string("is not a valid NURBS curve: ") + ex.what());
+    }
+    piece.closed = (e.flags & 1) != 0;
+  }
+
+  std::string file_;
+};
+
+}  // namespace
+
+Piece convert_entity(const RawEntity& e, const std::string& file) { return Converter(file).convert(e); }
+
+}  // namespace rollkin::dxf
