@@ -79,7 +79,7 @@ Reference sweep_reference(const testing::Fixture<M>& f, const std::vector<double
   for (double x : inputs) in.emplace_back(x);  // exactly the double inputs
   const SweepResult<M> res = sweep(f.mech, sd, q, rep, 0, in);
   for (const auto& p : res.poses) {
-    r.angles.push_back(p.report.ok() ? link_angles(f.mech, p.q) : std::vector<M>{});
+    r.angles.push_back(p.report.ok() ? link_angles<M>(f.mech, p.q) : std::vector<M>{});
     r.solved += p.report.ok();
   }
   r.seconds = seconds_since(t0);
@@ -93,7 +93,7 @@ double max_angle_error(const Mechanism<double>& m, const SweepResult<double>& re
   bool any = false;
   for (std::size_t i = 0; i < res.poses.size() && i < ref.angles.size(); ++i) {
     if (!res.poses[i].report.ok() || ref.angles[i].empty()) continue;
-    const std::vector<double> a = link_angles(m, res.poses[i].q);
+    const std::vector<double> a = link_angles<double>(m, res.poses[i].q);
     for (std::size_t l = 0; l < a.size(); ++l) {
       const double d = std::remainder(static_cast<double>(M(a[l]) - ref.angles[i][l]), 2 * pi<double>());
       worst = std::max(worst, std::abs(d));

@@ -52,9 +52,9 @@ BOOST_AUTO_TEST_CASE(link_twists_match_central_differences_of_the_link_poses) {
   const double h = 1e-5;
   double worst = 0;
   for (const SweepPose<double>& p : r.poses) {
-    evaluate_pairs(f.mech, p.q, nullptr, 1, d);
+    evaluate_pairs<double>(f.mech, p.q, nullptr, 1, d);
     const std::vector<SE2<double>> pose = link_poses(f.mech, d);
-    const std::vector<Twist<double>> twist = link_twists(f.mech, d, pose, p.qdot);
+    const std::vector<Twist<double>> twist = link_twists<double>(f.mech, d, pose, p.qdot);
     // Poses at q +- h qdot: first order along the motion, so the central difference is O(h^2) accurate.
     std::vector<SE2<double>> ahead, behind;
     for (double sign : {1.0, -1.0}) {

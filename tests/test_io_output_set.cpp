@@ -180,3 +180,47 @@ BOOST_AUTO_TEST_CASE(several_outputs_are_written_all_or_nothing) {
   BOOST_TEST(read_text(dir / "b.svg") == "new b");
   BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.svg"}));
 }
+
+BOOST_AUTO_TEST_CASE(streamed_outputs_are_written_in_blocks_all_or_nothing) {
+  // A streamed output of several blocks arrives whole; one whose writer fails leaves every target as it
+  // was and no temporary behind, also for the outputs already streamed (issue 15: --csv streamed).
+  const fs::path dir = fresh_dir("streamed");
+  write_text(dir / "a.csv", "old a");
+  write_text(dir / "b.csv", "old b");
+  std::string expected;
+  for (int k = 0; k < 300000; ++k) expected += std::to_string(k) + "\n";  // about 2 MB: three blocks
+  {
+    OutputSet out;
+    const auto a = out.add("--csv", (dir / "a.csv").string());
+    const auto b = out.add("--plot", (dir / "b.csv").string());
+    out.set_writer(a, [](rollkin::io::OutputSink& sink) {
+      for (int k = 0; k < 300000; ++k) {
+        sink.buffer() += std::to_string(k) + "\n";
+        sink.flush_full();
+        BOOST_TEST(sink.buffer().size() < 2 * rollkin::io::OutputSink::kBlock);
+      }
+    });
+    out.set_writer(b, [](rollkin::io::OutputSink& sink) {
+      sink.buffer() += "partial";
+      throw std::runtime_error("the writer failed");
+    });
+    BOOST_CHECK_THROW(out.commit(), std::runtime_error);
+  }
+  BOOST_TEST(read_text(dir / "a.csv") == "old a");
+  BOOST_TEST(read_text(dir / "b.csv") == "old b");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.csv"}));
+  OutputSet out;
+  const auto a = out.add("--csv", (dir / "a.csv").string());
+  const auto b = out.add("--plot", (dir / "b.csv").string());
+  out.set_writer(a, [](rollkin::io::OutputSink& sink) {
+    for (int k = 0; k < 300000; ++k) {
+      sink.buffer() += std::to_string(k) + "\n";
+      sink.flush_full();
+    }
+  });
+  out.set(b, "new b");
+  out.commit();
+  BOOST_TEST(read_text(dir / "a.csv") == expected);
+  BOOST_TEST(read_text(dir / "b.csv") == "new b");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.csv"}));
+}

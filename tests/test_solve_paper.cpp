@@ -57,7 +57,7 @@ BOOST_AUTO_TEST_CASE(sweep_closes_loops_and_rolls_without_slip) {
   for (const auto& pose : r.poses) {
     BOOST_TEST(pose.q(theta2) == pose.input);
     evaluate_pairs<double>(p.f.mech, pose.q, nullptr, 1, d);
-    compute_constraints(p.f.mech, pose.q, d);
+    compute_constraints<double>(p.f.mech, pose.q, d);
     worst_loop = std::max(worst_loop, d.residual.head<3>().cwiseAbs().maxCoeff());
     // eq. (7a)/(7b) with this project's signs: arc on one body equals minus the arc on the other.
     const double r3 = 1, r4 = 4;

@@ -190,7 +190,8 @@ BOOST_AUTO_TEST_CASE(approach_to_dead_point_is_continuous_and_stays_on_its_branc
   // continuation's branch check is there to reject).
   // (Started this close to the fold the classification says no_convergence rather than dead_point: the
   // dead-point test compares the condition with the sweep's start, which is already near-singular here.)
-  const auto on = p.sweep_to({t_ref - 1e-6}, &r.poses.back().q);
+  const VectorX<double> last_q = r.poses.back().q;
+  const auto on = p.sweep_to({t_ref - 1e-6}, &last_q);
   BOOST_TEST(!on.poses[0].report.ok());
   BOOST_TEST((on.poses[0].report.status == SolveStatus::DeadPoint || on.poses[0].report.status == SolveStatus::NoConvergence));
   VectorX<double> beyond = r.poses.back().q;

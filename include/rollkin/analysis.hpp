@@ -217,8 +217,9 @@ template <class S> void jerk(const Mechanism<S>& m, const VectorX<S>& q, const V
 /// Contact analysis at the solved pose q with rates qdot (per unit rate of the swept input; the other inputs
 /// held). Needs C2 contours at the contacts (curvature and its rate). A singular pose gives the minimum-norm
 /// accelerations of the rank-deficient system: no more meaningful there than the rates themselves.
-template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const VectorX<S>& q, const VectorX<S>& qdot,
-                                                AnalysisData<S>& data) {
+/// (q and qdot do not take part in deducing S: a sweep's pose columns, SweepResult::q(k), convert.)
+template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const std::common_type_t<VectorX<S>>& q,
+                                                const std::common_type_t<VectorX<S>>& qdot, AnalysisData<S>& data) {
   SolveData<S>& sd = data.solve;
   // Arc lengths counted from q itself: the rolling rows' residual is not needed here, only their Jacobian.
   sd.kin.reference = q;

@@ -54,9 +54,9 @@ template <class S> std::vector<InstantCentre<S>> centrodes(const Mechanism<S>& m
   for (std::size_t k = 0; k < sweep.poses.size(); ++k) {
     const SweepPose<S>& p = sweep.poses[k];
     if (!p.report.has_pose()) continue;
-    evaluate_pairs(m, p.q, nullptr, 1, d);
+    evaluate_pairs<S>(m, p.q, nullptr, 1, d);
     const std::vector<SE2<S>> pose = link_poses(m, d);
-    out[k] = instant_centre(pose, link_twists(m, d, pose, p.qdot), a, b, m.length_scale);
+    out[k] = instant_centre(pose, link_twists<S>(m, d, pose, p.qdot), a, b, m.length_scale);
   }
   return out;
 }

@@ -114,9 +114,13 @@ const CLI::Validator kFileName(
     },
     "", "");
 
-/// The option `name` storing a number in `slot` when given.
-CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, const std::string& help) {
-  return app.add_option_function<double>(name, [&slot](double v) { slot = v; }, help)
+/// The option `name` storing a number in `slot` when given, and the text it was given as in `text`.
+CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, std::string& text,
+                        const std::string& help) {
+  return app.add_option_function<std::string>(name, [&slot, &text](const std::string& v) {
+              text = v;
+              slot = finite_number(v);  // the check below accepted it
+            }, help)
       ->type_name("V")
       ->check(number("a number"));
 }
@@ -132,6 +136,7 @@ CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slo
 struct SweepRequest {
   std::string scene;
   std::optional<double> from, to, step;
+  std::string from_text, to_text, step_text;  // as given: the grid is the decimal one (solve/sweep_grid.hpp)
   double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
 };
 
@@ -141,9 +146,9 @@ void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>*
     app.add_option("SCENE", *scenes, "the scene(s): JSON files (docs/scene_format.md)")->required()->type_name("");
   else
     app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
-  add_number(app, "--from", r.from, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
-  add_number(app, "--to", r.to, "last input value (overrides the scene's \"sweep\")");
-  add_number(app, "--step", r.step, "step between input values, signed from --from toward --to");
+  add_number(app, "--from", r.from, r.from_text, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
+  add_number(app, "--to", r.to, r.to_text, "last input value (overrides the scene's \"sweep\")");
+  add_number(app, "--step", r.step, r.step_text, "step between input values, signed from --from toward --to");
   app.add_option("--max-steps", r.max_steps,
                  "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps (default 1e7)")
       ->type_name("N")
@@ -152,8 +157,11 @@ void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>*
 
 /// The sweep to run: the scene's, with the command line's overrides.
 io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
-  const std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
+  std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
   if (!s) throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
+  if (r.from) s->from_text = r.from_text;
+  if (r.to) s->to_text = r.to_text;
+  if (r.step) s->step_text = r.step_text;
   const std::string bad = io::check_sweep(*s);
   if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
   return *s;
@@ -196,6 +204,12 @@ struct SweepRun {
   void set_output(const std::string& option, const std::function<std::string()>& make_text) {
     const auto it = given_.find(option);
     if (it != given_.end()) outputs.set(it->second, make_text());
+  }
+
+  /// The same for an output streamed into its file at commit (io::OutputSet::set_writer).
+  void stream_output(const std::string& option, std::function<void(io::OutputSink&)> write) {
+    const auto it = given_.find(option);
+    if (it != given_.end()) outputs.set_writer(it->second, std::move(write));
   }
 
  private:
@@ -537,7 +551,7 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   const std::vector<double> file_values = io::sweep_values(sw);
   const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, result) : cli::SweepAnalysis{};
   const cli::OutputContext ctx{scene, sw, result, file_values, o.analysis ? &analysis : nullptr};
-  run.set_output("--csv", [&] { return cli::csv_text(ctx, o.rates); });
+  run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
   run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
   run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
   run.set_output("--animate", [&] { return cli::animation_html(ctx); });

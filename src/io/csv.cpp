@@ -3,18 +3,30 @@
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/input_error.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 namespace rollkin::io {
 
+void append_double(std::string& out, double v) {
+  if (std::isnan(v)) {
+    out += "nan";
+    return;
+  }
+  if (std::isinf(v)) {
+    out += v > 0 ? "inf" : "-inf";
+    return;
+  }
+  char buf[32];  // the shortest round-trip form of a double takes at most 24 characters
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
 std::string format_double(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  std::string out;
+  append_double(out, v);
+  return out;
 }
 
 std::string csv_field(const std::string& field) {
@@ -42,32 +54,36 @@ void CsvWriter::add_row(const std::vector<double>& values, const std::string& te
   rows_.push_back({values, text});
 }
 
-std::string CsvWriter::to_string() const {
-  std::string out;
+void append_csv_header(std::string& out, const std::vector<std::string>& numeric_columns, const std::string& text_column) {
   bool first = true;
-  for (const auto& c : columns_) {
+  for (const auto& c : numeric_columns) {
     if (!first) out += ',';
     out += csv_field(c);
     first = false;
   }
-  if (has_text_) {
+  if (!text_column.empty()) {
     if (!first) out += ',';
-    out += csv_field(text_column_);
+    out += csv_field(text_column);
   }
   out += '\n';
-  for (const auto& r : rows_) {
-    first = true;
-    for (double v : r.values) {
-      if (!first) out += ',';
-      out += format_double(v);
-      first = false;
-    }
-    if (has_text_) {
-      if (!first) out += ',';
-      out += csv_field(r.text);
-    }
-    out += '\n';
+}
+
+void append_csv_row(std::string& out, const double* values, std::size_t count, const std::string* text) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i) out += ',';
+    append_double(out, values[i]);
   }
+  if (text) {
+    if (count) out += ',';
+    out += csv_field(*text);
+  }
+  out += '\n';
+}
+
+std::string CsvWriter::to_string() const {
+  std::string out;
+  append_csv_header(out, columns_, text_column_);
+  for (const auto& r : rows_) append_csv_row(out, r.values.data(), r.values.size(), has_text_ ? &r.text : nullptr);
   return out;
 }
 

@@ -123,13 +123,24 @@ std::size_t OutputSet::add(const std::string& label, const std::string& path) {
   if (!S_ISDIR(ds.st_mode)) throw OutputError("cannot write " + shown + ": '" + dir + "' is not a directory");
   if (::access(dir.c_str(), W_OK | X_OK) != 0)
     throw OutputError("cannot write " + shown + ": directory '" + dir + "' is not writable (" + reason(errno) + ")");
-  outputs_.push_back(Output{label, path, target, {}, false});
+  outputs_.push_back(Output{label, path, target, {}, {}, false});
   return outputs_.size() - 1;
 }
 
 void OutputSet::set(std::size_t index, std::string content) {
   outputs_.at(index).content = std::move(content);
   outputs_.at(index).has_content = true;
+}
+
+void OutputSet::set_writer(std::size_t index, std::function<void(OutputSink&)> write) {
+  outputs_.at(index).writer = std::move(write);
+  outputs_.at(index).has_content = true;
+}
+
+void OutputSink::flush() {
+  const bool ok = write_all(fd_, buffer_);
+  if (!ok) throw OutputError("cannot write " + what_ + ": " + reason(errno));
+  buffer_.clear();
 }
 
 void OutputSet::commit() {
@@ -148,11 +159,23 @@ void OutputSet::commit() {
     temps.push_back(name);
     struct stat st {};
     const mode_t mode = stat_of(o.target, st) ? static_cast<mode_t>(st.st_mode & 07777) : fresh;
-    const bool ok = ::fchmod(fd, mode) == 0 && write_all(fd, o.content);
-    const int err = errno;
-    if (::close(fd) != 0 || !ok)
-      throw OutputError("cannot write " + named(o.label, o.path) + ": error while writing '" + name +
-                        "': " + reason(ok ? errno : err));
+    const std::string what = named(o.label, o.path) + ": error while writing '" + name + "'";
+    bool ok = ::fchmod(fd, mode) == 0;
+    int err = errno;
+    if (ok && o.writer) {
+      try {  // the writer streams through the sink; the file is closed whatever happens
+        OutputSink sink(fd, what);
+        o.writer(sink);
+        sink.flush();
+      } catch (...) {
+        ::close(fd);
+        throw;
+      }
+    } else if (ok) {
+      ok = write_all(fd, o.content);
+      err = errno;
+    }
+    if (::close(fd) != 0 || !ok) throw OutputError("cannot write " + what + ": " + reason(ok ? errno : err));
   }
   // 2. Renames; a failure puts back what was already replaced.
   enum class How { Exchanged, Created, Replaced };  // Exchanged: the old content sits at the temporary's name

@@ -374,9 +374,9 @@ std::optional<Sweep> requested_sweep(const Scene& scene, std::optional<double> f
     s.variable = scene.mechanism.drivers[0];
     s.unit = scene.unit_of(s.variable);
   }
-  if (from) s.from = *from;
-  if (to) s.to = *to;
-  if (step) s.step = *step;
+  if (from) s.from = *from, s.from_text.clear();
+  if (to) s.to = *to, s.to_text.clear();
+  if (step) s.step = *step, s.step_text.clear();
   return s;
 }
 

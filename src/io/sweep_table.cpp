@@ -75,21 +75,35 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
   return cols;
 }
 
-/// The numeric values of row r, in the order of column_names.
-std::vector<double> row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r,
-                               KinematicsData<double>& kin) {
+/// What a row is computed with, allocated once per table: the pose's variables, the pairs evaluated there,
+/// the row's values.
+struct RowWork {
+  explicit RowWork(const Mechanism<double>& m) : kin(m) {}
+  KinematicsData<double> kin;
+  VectorX<double> q;
+  std::vector<double> row;
+};
+
+/// The numeric values of row r into w.row, in the order of column_names.
+void row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r, RowWork& w) {
   const Mechanism<double>& m = out.scene.mechanism;
   const double in_scale = output_scale(m, out.sweep.variable);
-  const auto& pose = out.result.poses[r];
-  std::vector<double> row{input_column(out, r)};
-  const bool ok = pose.report.has_pose();  // values also for singular poses
-  for (int i : others) row.push_back(ok ? pose.q(i) * output_scale(m, i) : kNaN);
-  if (rates)
-    for (int i : m.unknowns) row.push_back(ok ? pose.qdot(i) * output_scale(m, i) / in_scale : kNaN);
+  const SweepResult<double>& res = out.result;
+  std::vector<double>& row = w.row;
+  row.clear();
+  row.push_back(input_column(out, r));
+  const bool ok = res.has_pose(r);  // values also for singular poses
+  const auto q = res.q(r);
+  for (int i : others) row.push_back(ok ? q(i) * output_scale(m, i) : kNaN);
+  if (rates) {
+    const auto qdot = res.qdot(r);
+    for (int i : m.unknowns) row.push_back(ok ? qdot(i) * output_scale(m, i) / in_scale : kNaN);
+  }
   std::vector<SE2<double>> lp;
   if (ok) {
-    evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);
-    lp = link_poses(m, kin);
+    w.q = q;
+    evaluate_pairs<double>(m, w.q, nullptr, 1, w.kin);
+    lp = link_poses(m, w.kin);
   }
   for (std::size_t l = 0; l < m.links.size(); ++l) {
     row.push_back(ok ? lp[l].translation().x() : kNaN);
@@ -100,8 +114,7 @@ std::vector<double> row_values(const SweepOutput& out, bool rates, const std::ve
     if (const auto& a = (*out.analysis)[r]) analysis_values(m, *a, in_scale, row);
     else row.resize(row.size() + analysis_column_count(m), kNaN);
   }
-  row.push_back(ok ? pose.report.residual : kNaN);
-  return row;
+  row.push_back(ok ? res.report(r).residual : kNaN);
 }
 
 }  // namespace
@@ -113,9 +126,9 @@ double output_scale(const Mechanism<double>& m, int var) {
 SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result) {
   AnalysisData<double> data(m);
   SweepAnalysis out;
-  out.reserve(result.poses.size());
-  for (const SweepPose<double>& p : result.poses)
-    out.push_back(p.report.has_pose() ? std::optional(analyse_pose(m, p.q, p.qdot, data)) : std::nullopt);
+  out.reserve(result.size());
+  for (std::size_t k = 0; k < result.size(); ++k)
+    out.push_back(result.has_pose(k) ? std::optional(analyse_pose(m, result.q(k), result.qdot(k), data)) : std::nullopt);
   return out;
 }
 
@@ -146,25 +159,44 @@ SweepTable sweep_table(const SweepOutput& out, bool rates) {
   SweepTable t;
   std::vector<int> others;
   t.names = column_names(out, rates, others);
-  t.columns.assign(t.names.size(), std::vector<double>(out.result.poses.size()));
-  KinematicsData<double> kin(out.scene.mechanism);
-  for (std::size_t r = 0; r < out.result.poses.size(); ++r) {
-    const std::vector<double> row = row_values(out, rates, others, r, kin);
-    if (row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
-    for (std::size_t c = 0; c < row.size(); ++c) t.columns[c][r] = row[c];
-    t.status.push_back(to_string(out.result.poses[r].report.status));
+  const std::size_t rows = out.result.size();
+  t.columns.assign(t.names.size(), std::vector<double>(rows));
+  t.status.reserve(rows);
+  RowWork w(out.scene.mechanism);
+  for (std::size_t r = 0; r < rows; ++r) {
+    row_values(out, rates, others, r, w);
+    if (w.row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
+    for (std::size_t c = 0; c < w.row.size(); ++c) t.columns[c][r] = w.row[c];
+    t.status.push_back(to_string(out.result.status(r)));
   }
   return t;
 }
 
+void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink) {
+  std::vector<int> others;
+  const std::vector<std::string> names = column_names(out, rates, others);
+  const std::string status_name = SweepTable().status_name;
+  append_csv_header(sink.buffer(), names, status_name);
+  RowWork w(out.scene.mechanism);
+  std::string status;
+  for (std::size_t r = 0; r < out.result.size(); ++r) {
+    row_values(out, rates, others, r, w);
+    if (w.row.size() != names.size()) throw std::logic_error("write_sweep_csv: a row's values do not match its columns");
+    status = to_string(out.result.status(r));
+    append_csv_row(sink.buffer(), w.row.data(), w.row.size(), &status);
+    sink.flush_full();
+  }
+}
+
 std::string SweepTable::csv() const {
-  CsvWriter csv(names, status_name);
+  std::string out;
+  append_csv_header(out, names, status_name);
   std::vector<double> row(names.size());
   for (std::size_t r = 0; r < rows(); ++r) {
     for (std::size_t c = 0; c < names.size(); ++c) row[c] = columns[c][r];
-    csv.add_row(row, status[r]);
+    append_csv_row(out, row.data(), row.size(), &status[r]);
   }
-  return csv.to_string();
+  return out;
 }
 
 }  // namespace rollkin::io

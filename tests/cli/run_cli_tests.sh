@@ -620,6 +620,20 @@ check "check --step 0: exit 2 naming --step" $([ "$rc" -eq 2 ] && grep -q -- "--
 run check "$UNDERCUT" --csv x.csv
 check "check --csv: unknown option, exit 2, nothing written" $([ "$rc" -eq 2 ] && grep -q 'unknown option "--csv" for check' err.txt && [ ! -e x.csv ]; echo $?)
 
+# ---- the input column is the decimal grid asked for; numbers in their shortest round-trip form (issue 15) ----
+run solve "$EX/paper_fourbar.json" --from -50 --to -48.9 --step 0.001 --csv grid.csv
+check "decimal grid: row 2 reads -49.999, row 1030 the double nearest to -48.971 (written -48.971)" \
+  $([ "$rc" -eq 0 ] && [ "$(sed -n 3p grid.csv | cut -d, -f1)" = "-49.999" ] && [ "$(sed -n 1031p grid.csv | cut -d, -f1)" = "-48.971" ]; echo $?)
+run solve "$EX/paper_fourbar.json" --from -5e1 --to -48.9 --step 1e-3 --csv grid2.csv
+check "decimal grid: --from -5e1 --step 1e-3 gives the same file as -50 and 0.001" $([ "$rc" -eq 0 ] && cmp -s grid.csv grid2.csv; echo $?)
+# Each number has as few significant digits as reading back to its double allows: one digit fewer never
+# reads back (awk's printf "%.*g" and strtod are the independent truth).
+check "CSV numbers: the shortest text that reads back to the same double (none padded to 17 digits)" \
+  $(awk -F, 'NR > 1 { for (i = 1; i < NF; ++i) { v = $i; if (v == "nan") continue;
+      m = v; sub(/[eE].*/, "", m); gsub(/[-+.]/, "", m); sub(/^0+/, "", m); if (index(v, ".") == 0 && index(v, "e") == 0) sub(/0+$/, "", m);
+      d = length(m); if (d < 2) continue;
+      if (sprintf("%.*g", d - 1, v) + 0 == v + 0) bad++ } } END { exit bad > 0 }' grid.csv; echo $?)
+
 # ---- the benchmark's options (only when its path is given: ctest passes it when the benchmark is built) ----
 if [ -n "$BENCH" ]; then
   "$BENCH" --help >out.txt 2>err.txt; rc=$?

@@ -1,5 +1,5 @@
-// Small CSV writer for result tables: a header row, rows of doubles written with full round-trip precision
-// (printf "%.17g", so strtod gives back the identical double; non-finite values as nan / inf / -inf) and an
+// Small CSV writer for result tables: a header row, rows of doubles each written as the shortest text that
+// reads back (strtod) to the identical double (std::to_chars; non-finite values as nan / inf / -inf) and an
 // optional trailing text column (e.g. a solver status). Fields are quoted per RFC 4180 only when they
 // contain a comma, a double quote, CR or LF. Lines end with '\n'. Files are written atomically
 // (io/atomic_file.hpp): PATH.tmp, then rename; on failure std::runtime_error naming PATH.
@@ -15,13 +15,21 @@
 
 namespace rollkin::io {
 
-/// "%.17g" of v (round-trips through strtod); "nan", "inf", "-inf" for non-finite values.
+/// The shortest decimal text of v that reads back (strtod) to v exactly (std::to_chars); "nan", "inf",
+/// "-inf" for non-finite values. append_double appends it to `out`.
 std::string format_double(double v);
+void append_double(std::string& out, double v);
 
 /// The field as it must appear in a CSV line: control characters written as escapes ("\n", "\r",
 /// "\t", "\x1b") so that a row is one line, then double-quoted with inner quotes doubled when it
 /// contains ',' or '"'.
 std::string csv_field(const std::string& field);
+
+/// Appends the header line: the numeric columns' names, then text_column unless it is empty.
+void append_csv_header(std::string& out, const std::vector<std::string>& numeric_columns, const std::string& text_column);
+
+/// Appends one row: `count` values (append_double), then the text field when `text` is given.
+void append_csv_row(std::string& out, const double* values, std::size_t count, const std::string* text);
 
 class CsvWriter {
  public:

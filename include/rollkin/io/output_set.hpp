@@ -7,6 +7,10 @@
 //   out.set(csv, csv_text);  out.set(plot, svg_text);
 //   out.commit();                                     // every file replaced, or none
 //
+// An output may instead be streamed (set_writer): commit() calls its writer, which appends text to the
+// sink's buffer and hands it over a block at a time (OutputSink::flush_full), so a large output is never
+// held whole in memory; it still goes to the temporary and is renamed only with all the others.
+//
 // add() refuses (OutputError) an empty path, a directory, a path whose directory is missing or not
 // writable, an existing file that is not a regular file, a file the run read (compared by realpath and by
 // device/inode, so hard links and symlinks are caught) and a file already in the set.
@@ -20,6 +24,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +35,29 @@ namespace rollkin::io {
 class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// The temporary file a streamed output is written to, through a buffer written out in large blocks.
+class OutputSink {
+ public:
+  static constexpr std::size_t kBlock = std::size_t(1) << 20;  // bytes handed to write(2) at a time
+  OutputSink(const OutputSink&) = delete;
+  OutputSink& operator=(const OutputSink&) = delete;
+
+  /// Append text here, then call flush_full().
+  std::string& buffer() { return buffer_; }
+  /// Writes the buffer out once it holds a block or more. Throws OutputError naming the output.
+  void flush_full() {
+    if (buffer_.size() >= kBlock) flush();
+  }
+
+ private:
+  friend class OutputSet;
+  OutputSink(int fd, std::string what) : fd_(fd), what_(std::move(what)) { buffer_.reserve(kBlock + kBlock / 4); }
+  void flush();
+  int fd_;
+  std::string what_;  // "--csv 'run.csv': error while writing '.run.csv.XXXXXX'" for messages
+  std::string buffer_;
 };
 
 class OutputSet {
@@ -47,6 +75,9 @@ class OutputSet {
   /// The content of output `index`, kept in memory until commit().
   void set(std::size_t index, std::string content);
 
+  /// Output `index` is streamed: commit() calls `write` with the sink of its temporary file.
+  void set_writer(std::size_t index, std::function<void(OutputSink&)> write);
+
   /// Writes every output (all must have been set) all or nothing. Throws OutputError.
   void commit();
 
@@ -56,6 +87,7 @@ class OutputSet {
  private:
   struct Output {
     std::string label, path, target, content;
+    std::function<void(OutputSink&)> writer;  // when set, streams the content instead
     bool has_content = false;
   };
   std::vector<std::string> inputs_;

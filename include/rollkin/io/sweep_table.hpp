@@ -9,6 +9,7 @@
 #pragma once
 
 #include "rollkin/analysis.hpp"
+#include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -69,5 +70,9 @@ struct SweepTable {
 /// status. Angles in degrees, lengths in scene units, rates per input unit. A pose without values (not
 /// solved) has NaN in every numeric column.
 SweepTable sweep_table(const SweepOutput& out, bool rates);
+
+/// The same table as CSV text (SweepTable::csv(), identical bytes) streamed row by row into `sink` (the
+/// CLI's --csv): no column of the table is held in memory.
+void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink);
 
 }  // namespace rollkin::io

@@ -23,6 +23,7 @@
 #pragma once
 
 #include "rollkin/solve/position.hpp"
+#include "rollkin/solve/sweep_result.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -49,24 +50,6 @@ template <class S> struct ContinuationSettings {
   /// Cancellation (e.g. a Ctrl-C in the Python module): when set and true, sweep() stops before the next
   /// requested pose; the poses not reached keep the status NotReached.
   const std::atomic<bool>* cancel = nullptr;
-};
-
-template <class S> struct SweepPose {
-  S input;
-  VectorX<S> q, qdot;  // qdot: rates per unit rate of the swept driver
-  SolveReport<S> report;
-};
-
-template <class S> struct SweepResult {
-  SolveReport<S> assembly;
-  std::vector<SweepPose<S>> poses;          // one per requested input, in the requested order
-  std::vector<SolveReport<S>> limits;       // limits met (at most one per direction)
-  /// Every requested pose plainly solved (no limit, no singular pose).
-  bool all_solved() const {
-    for (const auto& p : poses)
-      if (!p.report.ok()) return false;
-    return assembly.ok();
-  }
 };
 
 namespace detail {
@@ -511,14 +494,10 @@ template <class S> S estimate_substeps(const Mechanism<S>& m, const VectorX<S>& 
 template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
                                         const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
                                         const ContinuationSettings<S>& cfg = {}) {
-  SweepResult<S> out;
-  out.assembly = assembly;
-  out.poses.resize(inputs.size());
+  // Sized once for every requested input: storing a pose below allocates nothing.
+  SweepResult<S> out(assembly, inputs, static_cast<Eigen::Index>(m.variable_count()),
+                     assembly.ok() ? SolveStatus::NotReached : assembly.status);
   const int var = m.drivers[driver];
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    out.poses[i].input = inputs[i];
-    out.poses[i].report.status = assembly.ok() ? SolveStatus::NotReached : assembly.status;
-  }
   if (!assembly.ok()) return out;
 
   // Requested inputs on each side of the assembly input, nearest first.
@@ -534,19 +513,20 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
     detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
       if (cfg.cancel && cfg.cancel->load(std::memory_order_relaxed)) return out;
-      SweepPose<S>& pose = out.poses[(*side)[k]];
-      const SolveReport<S> rep = tracer.advance(pose.input);
+      const std::size_t at = (*side)[k];
+      const SolveReport<S> rep = tracer.advance(inputs[at]);
       if (!rep.has_pose()) {  // this input and all beyond it on this side are past the limit
         out.limits.push_back(rep);
-        for (std::size_t rest = k; rest < side->size(); ++rest) {
-          out.poses[(*side)[rest]].report = rep;
-          out.poses[(*side)[rest]].report.status = rest == k ? rep.status : SolveStatus::NotReached;
+        out.set_report(at, rep);
+        if (k + 1 < side->size()) {
+          SolveReport<S> beyond = rep;
+          beyond.status = SolveStatus::NotReached;
+          out.set_report((*side)[k + 1], beyond);
+          for (std::size_t rest = k + 2; rest < side->size(); ++rest) out.share_report((*side)[rest], (*side)[k + 1]);
         }
         break;
       }
-      pose.q = tracer.q();
-      pose.qdot = tracer.v();
-      pose.report = rep;
+      out.set_pose(at, tracer.q(), tracer.v(), rep);
     }
   }
   return out;

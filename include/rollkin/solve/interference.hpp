@@ -260,7 +260,7 @@ template <class S> SweepInterference check_interference(const Mechanism<S>& m, c
     out.poses[i].input = to_double(p.input);
     if (!p.report.has_pose()) continue;
     out.poses[i].checked = true;
-    out.poses[i].findings = check_pose_interference(m, p.q, opt, out.contour_pairs, local, out.touch_tolerance, d);
+    out.poses[i].findings = check_pose_interference<S>(m, p.q, opt, out.contour_pairs, local, out.touch_tolerance, d);
   }
   return out;
 }

@@ -39,7 +39,7 @@ int main() {
   check(err < mpfr50(std::string("1e-45")), "SE2<mpfr50> sin(pi/6) = 1/2 to 1e-45");
 
   // Compiled part of the library.
-  check(rollkin::io::format_double(0.1) == "0.10000000000000001", "rollkin::io::format_double (compiled library)");
+  check(rollkin::io::format_double(0.1) == "0.1", "rollkin::io::format_double (compiled library)");
 
   if (failures != 0) std::printf("%d check(s) failed\n", failures);
   return failures == 0 ? 0 : 1;

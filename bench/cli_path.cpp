@@ -1,0 +1,189 @@
+// rollkin_bench_cli: the path a user runs (issue 15, "The path a user runs: the CLI and its output"). All in
+// one run, on the paper example over theta2 = -50 .. 100 degrees by 0.001 (150,001 poses):
+//   - hand: the hand-specialised limit (bench/hand_paper.hpp: 2 unknowns, closed-form Jacobian and arc
+//     lengths), in process;
+//   - library: rollkin::sweep() on the scene as `rollkin solve` reads it, in process (assembly excluded);
+//   - cli: `rollkin solve examples/paper_fourbar.json --from -50 --to 100 --step 0.001` as a child process,
+//     without output and with --csv FILE (wall time from spawn to exit, everything included: start-up,
+//     scene, assembly, sweep, output), and the child's peak resident memory (wait4's ru_maxrss);
+//   - scipy: bench/scipy_paper.py (fsolve with quad arc lengths) with /usr/bin/python3, fewer poses (it takes
+//     about a millisecond each), per pose.
+// Medians over --repeats runs (alternating the cases, so that the machine's load drifts evenly). Prints a
+// table with the targets: cli <= 1.0x hand per pose, cli --csv <= 2.5x, peak memory < 40 MB.
+//
+//   rollkin_bench_cli [--rollkin build/rollkin] [--repeats 7] [--scipy-poses 1501] [--no-scipy]
+#include "hand_paper.hpp"
+
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr long kPoses = 150001;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Child {
+  double seconds = 0;
+  double max_rss_mb = 0;
+  int status = -1;
+};
+
+/// Runs argv with stdout and stderr to /dev/null; wall time and peak RSS of the child (wait4).
+Child run_child(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  Child c;
+  const Clock::time_point t0 = Clock::now();
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ) != 0) {
+    posix_spawn_file_actions_destroy(&fa);
+    return c;
+  }
+  int status = 0;
+  struct rusage ru {};
+  wait4(pid, &status, 0, &ru);
+  c.seconds = seconds_since(t0);
+  c.max_rss_mb = static_cast<double>(ru.ru_maxrss) / 1024.0;  // kilobytes on Linux
+  c.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  posix_spawn_file_actions_destroy(&fa);
+  return c;
+}
+
+/// The SciPy baseline's us per pose (its own median over its repeats), or a negative number on failure.
+double scipy_us_per_pose(const std::string& script, int poses, std::string& check) {
+  const std::string cmd = "/usr/bin/python3 " + script + " --poses " + std::to_string(poses) + " --step " +
+                          std::to_string(150.0 / (poses - 1)) + " --repeat 3 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return -1;
+  double us = -1, lo = 0, hi = 0, phi = 0;
+  char line[256];
+  while (std::fgets(line, sizeof line, p)) {
+    if (std::sscanf(line, "us_per_pose %lf %lf %lf", &us, &lo, &hi) == 3) continue;
+    if (std::sscanf(line, "phi_first_deg %lf", &phi) == 1) check = std::to_string(phi);
+  }
+  pclose(p);
+  return us;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string rollkin = "rollkin", source = ROLLKIN_SOURCE_DIR;
+  int repeats = 7, scipy_poses = 1501;
+  bool no_scipy = false;
+  CLI::App app("the CLI path against the hand-coded limit and SciPy (bench/cli_path.cpp)");
+  app.add_option("--rollkin", rollkin, "the rollkin executable (default: next to this one)")->type_name("FILE");
+  app.add_option("--repeats", repeats, "runs per case (median)")->check(CLI::Range(1, 1000));
+  app.add_option("--scipy-poses", scipy_poses, "poses of the SciPy sweep over the same range")->check(CLI::Range(2, 150001));
+  app.add_flag("--no-scipy", no_scipy, "skip the SciPy baseline");
+  CLI11_PARSE(app, argc, argv);
+  if (rollkin == "rollkin") rollkin = (std::string(argv[0]).find('/') == std::string::npos ? std::string(".")
+                                        : std::string(argv[0]).substr(0, std::string(argv[0]).rfind('/'))) + "/rollkin";
+  const std::string scene_file = source + "/examples/paper_fourbar.json";
+  const std::string csv = "/tmp/rollkin_bench_cli." + std::to_string(getpid()) + ".csv";
+  const std::vector<std::string> plain{rollkin, "solve", scene_file, "--from", "-50", "--to", "100", "--step", "0.001"};
+  std::vector<std::string> with_csv = plain;
+  with_csv.push_back("--csv");
+  with_csv.push_back(csv);
+
+  // The library on the scene as the CLI reads it.
+  using namespace rollkin;
+  const io::Scene scene = io::load_scene(scene_file);
+  io::Sweep sw = *scene.sweep;
+  sw.from = -50;
+  sw.to = 100;
+  sw.step = 0.001;
+  const std::vector<double> inputs = io::sweep_inputs(sw);
+  if (static_cast<long>(inputs.size()) != kPoses) {
+    std::cerr << "rollkin_bench_cli: expected " << kPoses << " inputs, got " << inputs.size() << "\n";
+    return 2;
+  }
+
+  std::vector<double> hand, lib, cli, cli_csv, rss, rss_csv;
+  std::vector<hand_paper::Unknowns> hand_out;
+  long hand_iterations = 0;
+  double worst_phi = 0;
+  int bad_status = 0;
+  for (int r = 0; r < repeats; ++r) {
+    Clock::time_point t0 = Clock::now();
+    hand_iterations = hand_paper::sweep(-50, 0.001, kPoses, hand_out);
+    hand.push_back(seconds_since(t0) / kPoses * 1e6);
+
+    SolveData<double> sd(scene.mechanism);
+    VectorX<double> q = scene.guess;
+    const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+    t0 = Clock::now();
+    const SweepResult<double> res = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
+    lib.push_back(seconds_since(t0) / kPoses * 1e6);
+    if (r == 0) {  // the hand-coded values against the library's (theta5 = O_B's variable, index 5)
+      for (long k = 0; k < kPoses; ++k)
+        worst_phi = std::max(worst_phi, std::abs(hand_out[static_cast<std::size_t>(k)].phi - res.q(static_cast<std::size_t>(k))(5)));
+    }
+
+    const Child a = run_child(plain);
+    const Child b = run_child(with_csv);
+    bad_status += (a.status != 0) + (b.status != 0);
+    cli.push_back(a.seconds / kPoses * 1e6);
+    rss.push_back(a.max_rss_mb);
+    cli_csv.push_back(b.seconds / kPoses * 1e6);
+    rss_csv.push_back(b.max_rss_mb);
+  }
+  std::remove(csv.c_str());
+  double scipy = -1;
+  std::string scipy_check;
+  if (!no_scipy) scipy = scipy_us_per_pose(source + "/bench/scipy_paper.py", scipy_poses, scipy_check);
+
+  const double h = median(hand);
+  auto verdict = [](bool ok) { return ok ? "PASS" : "MISS"; };
+  std::printf("The CLI path: paper example, theta2 -50..100 by 0.001 deg (%ld poses), medians of %d runs\n", kPoses, repeats);
+  std::printf("hand-coded: %.2f Newton iterations/pose; largest |phi_hand - theta5_library| %.2e rad\n",
+              static_cast<double>(hand_iterations) / kPoses, worst_phi);
+  std::printf("| case | us/pose (min-max) | x hand | peak RSS MB | target |\n|---|---:|---:|---:|---|\n");
+  auto row = [&](const char* name, const std::vector<double>& t, const std::vector<double>* m, const std::string& target) {
+    std::printf("| %s | %.3f (%.3f-%.3f) | %.2f | %s | %s |\n", name, median(t), *std::min_element(t.begin(), t.end()),
+                *std::max_element(t.begin(), t.end()), median(t) / h, m ? std::to_string(median(*m)).substr(0, 5).c_str() : "",
+                target.c_str());
+  };
+  row("hand-coded limit (bench/hand_paper.hpp)", hand, nullptr, "");
+  row("library sweep()", lib, nullptr, "");
+  row("rollkin solve, no output", cli, &rss,
+      std::string(verdict(median(cli) <= 1.0 * h)) + " time (<= 1.0x), " + verdict(median(rss) < 40) + " memory (< 40 MB)");
+  row("rollkin solve --csv", cli_csv, &rss_csv,
+      std::string(verdict(median(cli_csv) <= 2.5 * h)) + " time (<= 2.5x), " + verdict(median(rss_csv) < 40) + " memory (< 40 MB)");
+  if (scipy > 0)
+    std::printf("| SciPy fsolve + quad (%d poses, phi(-50) = %s deg) | %.1f | %.0f | | |\n", scipy_poses, scipy_check.c_str(),
+                scipy, scipy / h);
+  if (bad_status) std::printf("WARNING: %d rollkin runs did not exit 0\n", bad_status);
+  return 0;
+}

@@ -1,0 +1,93 @@
+// Memory of a sweep (issue 15): a sweep's results are columns sized once (solve/sweep_result.hpp), so the
+// per-pose work allocates nothing. Counted with a replacement of the global operator new in this test
+// executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of the same
+// range that reaches the dead point at the end of the paper example's motion) must not grow with the poses.
+#define BOOST_TEST_MODULE solve_allocation
+#include <boost/test/unit_test.hpp>
+
+#include "mechanisms.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+
+std::atomic<long> g_allocations{0};
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace rollkin;
+using namespace rollkin::testing;
+
+namespace {
+
+/// n inputs evenly over [from, to] degrees (radians).
+std::vector<double> grid(int n, double from, double to) {
+  std::vector<double> v;
+  for (int k = 0; k < n; ++k) v.push_back((from + (to - from) * k / (n - 1)) * pi<double>() / 180);
+  return v;
+}
+
+struct Counted {
+  long allocations;
+  SweepResult<double> result;
+};
+
+/// The allocations made by one sweep of the paper example over `inputs` (the inputs and the fixture made
+/// before counting).
+Counted count_sweep(const std::vector<double>& inputs) {
+  const Fixture<double> f = paper_fourbar<double>();
+  SolveData<double> sd(f.mech);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_fixture(f, q, sd);
+  BOOST_TEST_REQUIRE(assembly.ok());
+  const long before = g_allocations.load();
+  SweepResult<double> r = sweep(f.mech, sd, q, assembly, 0, inputs);
+  return {g_allocations.load() - before, std::move(r)};
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_counter_counts) {
+  const long before = g_allocations.load();
+  auto* v = new std::vector<double>(1000);
+  delete v;
+  BOOST_TEST(g_allocations.load() - before == 2);  // the vector object and its storage
+}
+
+BOOST_AUTO_TEST_CASE(per_pose_work_allocates_nothing) {
+  // Both sweeps cover the same range (same sub-steps of the continuation between the requested values up to
+  // the finer grid), so only the number of poses stored differs.
+  const Counted few = count_sweep(grid(10, -40, 90));
+  const Counted many = count_sweep(grid(1000, -40, 90));
+  BOOST_TEST_REQUIRE(few.result.all_solved());
+  BOOST_TEST_REQUIRE(many.result.all_solved());
+  BOOST_TEST_MESSAGE("allocations: 10 poses " << few.allocations << ", 1000 poses " << many.allocations);
+  BOOST_TEST(many.allocations == few.allocations);
+  // The values are stored: pose 999 is theta2 = 90 degrees, solved.
+  BOOST_TEST(many.result.q(999)(0) == 90 * pi<double>() / 180);
+}
+
+BOOST_AUTO_TEST_CASE(poses_beyond_a_limit_share_one_report) {
+  // Past the dead point (about 97.7 degrees in the paper example) every pose is not_reached with the limit's
+  // detail: stored once, not once per pose.
+  const Counted few = count_sweep(grid(10, 90, 120));
+  const Counted many = count_sweep(grid(1000, 90, 120));
+  BOOST_TEST_REQUIRE(many.result.limits.size() == 1u);
+  BOOST_TEST(many.result.status(999) == SolveStatus::NotReached);
+  BOOST_TEST(!many.result.report(999).detail.empty());
+  BOOST_TEST_MESSAGE("allocations past a limit: 10 poses " << few.allocations << ", 1000 poses " << many.allocations);
+  BOOST_TEST(many.allocations == few.allocations);
+}
