@@ -191,19 +191,19 @@ template <class S> Fixture<S> eccentric_cam(const S& R, const S& e, bool roller,
 
 // ---- generated mechanisms of N loops (tests/test_solve_sparse.cpp and the benchmark's scaling section) ----
 
-/// Radius of disk k of gear_train: 1, 1.5, 0.75, 1.25 repeating (unequal, so the ratios do not cancel).
-template <class S> S gear_train_radius(int k) {
+/// Radius of disk k of disk_train: 1, 1.5, 0.75, 1.25 repeating (unequal, so the ratios do not cancel).
+template <class S> S disk_train_radius(int k) {
   const int pattern[4] = {4, 6, 3, 5};
   return S(pattern[k % 4]) / S(4);
 }
 
-/// Train of n + 1 disks (radii gear_train_radius), each on a revolute to the ground, pivots on the x-axis at
+/// Train of n + 1 disks (radii disk_train_radius), each on a revolute to the ground, pivots on the x-axis at
 /// the sum of neighbouring radii, neighbours rolling on each other: n loops, each closed through its own
 /// contact. Variables: phi_0 .. phi_n (phi_0 the input), then (u_k, v_k) of contact k (disk k, disk k+1).
 /// Rolling without slip: r_k dphi_k = -r_k+1 dphi_k+1, so phi_k = (-1)^k (r_0 / r_k) phi_0. Overconstrained:
 /// each loop's centre distance row repeats what the pivots fix (4n equations, 3n unknowns, rank 3n).
 /// Assembled at phi = 0 with contact k on the x-axis (u_k = 0, v_k = pi): the guess is exact.
-template <class S> Fixture<S> gear_train(int n) {
+template <class S> Fixture<S> disk_train(int n) {
   MechanismBuilder<S> b;
   const int ground = b.link("ground", true);
   std::vector<int> rim, pivot;
@@ -211,8 +211,8 @@ template <class S> Fixture<S> gear_train(int n) {
   for (int k = 0; k <= n; ++k) {
     const std::string name = "disk" + std::to_string(k);
     const int disk = b.link(name);
-    if (k > 0) x += gear_train_radius<S>(k - 1) + gear_train_radius<S>(k);
-    rim.push_back(b.contour(disk, "rim", Circle<S>(gear_train_radius<S>(k))));
+    if (k > 0) x += disk_train_radius<S>(k - 1) + disk_train_radius<S>(k);
+    rim.push_back(b.contour(disk, "rim", Circle<S>(disk_train_radius<S>(k))));
     pivot.push_back(b.revolute("pivot" + std::to_string(k), ground, disk, SE2<S>(S(0), Vec2<S>(x, S(0))), SE2<S>(),
                                "phi"));
   }

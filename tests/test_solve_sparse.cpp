@@ -1,5 +1,5 @@
 // The sparse path of the position solver (solve/sparse_lu.hpp) on generated mechanisms of n loops
-// (tests/mechanisms.hpp: gear_train, four_bar_chain) up to n = 256: results equal the closed forms and the
+// (tests/mechanisms.hpp: disk_train, four_bar_chain) up to n = 256: results equal the closed forms and the
 // dense solver's; redundant constraints found as by the dense path; inconsistent and underdetermined
 // mechanisms reported as before; the determinant sign that the continuation tracks branches with is the
 // dense path's; a scalar without a sparse back end (MPFR) falls back to the dense path.
@@ -62,7 +62,7 @@ double gear_train_error_deg(int n, const std::vector<VectorX<double>>& poses) {
   double worst = 0;
   for (const auto& q : poses)
     for (int k = 0; k <= n; ++k) {
-      const double expected = (k % 2 ? -1 : 1) * gear_train_radius<double>(0) / gear_train_radius<double>(k) * q(0);
+      const double expected = (k % 2 ? -1 : 1) * disk_train_radius<double>(0) / disk_train_radius<double>(k) * q(0);
       worst = std::max(worst, std::abs(q(k) - expected) / kDeg);
     }
   return worst;
@@ -98,17 +98,17 @@ double chain_error_deg(int n, const std::vector<VectorX<double>>& poses) {
 
 BOOST_AUTO_TEST_CASE(automatic_choice_is_dense_for_small_and_sparse_for_large_mechanisms) {
   BOOST_TEST((SolveData<double>(paper_fourbar<double>().mech).method == Factorisation::Dense));
-  BOOST_TEST((SolveData<double>(gear_train<double>(2).mech).method == Factorisation::Dense));
-  BOOST_TEST((SolveData<double>(gear_train<double>(64).mech).method == default_sparse_factorisation()));
+  BOOST_TEST((SolveData<double>(disk_train<double>(2).mech).method == Factorisation::Dense));
+  BOOST_TEST((SolveData<double>(disk_train<double>(64).mech).method == default_sparse_factorisation()));
   BOOST_TEST((SolveData<double>(four_bar_chain<double>(64).mech).method == default_sparse_factorisation()));
   // The sparse path does not hold the dense Jacobian.
-  BOOST_TEST(SolveData<double>(gear_train<double>(64).mech).kin.jacobian.size() == 0);
+  BOOST_TEST(SolveData<double>(disk_train<double>(64).mech).kin.jacobian.size() == 0);
 }
 
 BOOST_AUTO_TEST_CASE(gear_trains_follow_the_ratio_products_and_the_dense_solver) {
   const std::vector<double> inputs = inputs_deg(0, 180, 15);
   for (int n : {2, 8, 32, 256}) {
-    const Fixture<double> f = gear_train<double>(n);
+    const Fixture<double> f = disk_train<double>(n);
     for (Factorisation how : {Factorisation::EigenSparseLU, Factorisation::Klu}) {
       SolveReport<double> rep;
       const auto poses = follow(f, how, inputs, &rep);
@@ -122,7 +122,7 @@ BOOST_AUTO_TEST_CASE(gear_trains_follow_the_ratio_products_and_the_dense_solver)
     }
   }
   // n = 256 against the dense solver at a few inputs (its dense decomposition costs ~N^3 per step).
-  const Fixture<double> f = gear_train<double>(256);
+  const Fixture<double> f = disk_train<double>(256);
   const std::vector<double> few{10 * kDeg, 25 * kDeg};
   BOOST_TEST(max_difference(follow(f, Factorisation::Automatic, few), follow(f, Factorisation::Dense, few)) < 1e-12);
 }
@@ -157,7 +157,7 @@ BOOST_AUTO_TEST_CASE(four_bar_chains_follow_the_closed_form_and_the_dense_solver
 BOOST_AUTO_TEST_CASE(inconsistent_and_underdetermined_trains_are_reported_as_by_the_dense_path) {
   for (Factorisation how : {Factorisation::Dense, Factorisation::EigenSparseLU, Factorisation::Klu}) {
     // The last disk's pivot 1% too far: the last contact cannot close.
-    Fixture<double> f = gear_train<double>(32);
+    Fixture<double> f = disk_train<double>(32);
     const int last = static_cast<int>(f.mech.pairs.size()) - 33;  // pivot32: the revolutes come first
     BOOST_TEST_REQUIRE(f.mech.pairs[last].name == "pivot32");
     f.mech.pairs[last].frame_a = SE2<double>(0, f.mech.pairs[last].frame_a.translation() * 1.01);
@@ -197,13 +197,13 @@ BOOST_AUTO_TEST_CASE(velocities_and_accelerations_equal_the_dense_path) {
 
 BOOST_AUTO_TEST_CASE(mpfr_falls_back_to_the_dense_path) {
   using Mp = mpfr50;
-  const Fixture<Mp> f = gear_train<Mp>(sparse_threshold);
+  const Fixture<Mp> f = disk_train<Mp>(sparse_threshold);
   SolveData<Mp> sd(f.mech, Factorisation::Klu);
   BOOST_TEST((sd.method == Factorisation::Dense));
   VectorX<Mp> q = f.guess;
   BOOST_TEST_REQUIRE(assemble(f.mech, q, sd, f.held).ok());
   q(0) = Mp(30) * pi<Mp>() / Mp(180);
   BOOST_TEST_REQUIRE(solve_position(f.mech, q, sd).ok());
-  const Mp expected = -gear_train_radius<Mp>(0) / gear_train_radius<Mp>(1) * q(0);
+  const Mp expected = -disk_train_radius<Mp>(0) / disk_train_radius<Mp>(1) * q(0);
   BOOST_TEST(abs(q(1) - expected) < Mp("1e-40"));
 }

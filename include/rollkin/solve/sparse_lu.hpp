@@ -45,7 +45,7 @@ enum class Factorisation {
 
 /// Unknowns from which Automatic factors sparse: below it the fixed-size dense kernels win (measured by the
 /// benchmark's scaling section, docs/benchmark.md).
-inline constexpr int sparse_threshold = 24;
+inline constexpr int sparse_threshold = 12;
 
 /// The sparse back ends work in double; other scalars (MPFR) take the dense path.
 template <class S> inline constexpr bool sparse_factorisation_available = std::is_same_v<S, double>;
