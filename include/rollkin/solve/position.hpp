@@ -182,21 +182,18 @@ template <class S> struct SolveData {
  private:
   std::vector<int> unknown_of_variable_;  // a variable's column among the unknowns, -1 for a driver
   int selected_for_rows_ = -1;            // the row count the sparse LU's independent rows were chosen for
-  bool sparse_rank_deficient_ = false;    // rank < unknowns where the rows were chosen: dense from then on
 
   /// Sparse LU of the independent rows among the first `rows` (chosen at the first pose, again after a
-  /// pose where they failed). False when the dense decomposition must do this pose.
+  /// pose where they failed or were fewer than the unknowns). False when the dense decomposition must do
+  /// this pose.
   bool factor_sparse(int rows) {
     const auto n = static_cast<int>(unknowns.size());
-    if (rows < n || sparse_rank_deficient_) return false;
+    if (rows < n) return false;
     if (!sparse_lu.ready() || selected_for_rows_ != rows) {
       std::vector<int> selected(static_cast<std::size_t>(rows));
       for (int r = 0; r < rows; ++r) selected[static_cast<std::size_t>(r)] = r;
       if (rows > n) selected = independent_rows(scaled_sparse_jacobian(rows));
-      if (static_cast<int>(selected.size()) < n) {  // rank deficient: the minimum-norm steps of the COD
-        sparse_rank_deficient_ = true;
-        return false;
-      }
+      if (static_cast<int>(selected.size()) < n) return false;  // rank deficient here: the COD's minimum-norm step
       sparse_lu.setup(kin.pattern, unknown_of_variable_, selected, row_weight, col_scale, method);
       selected_for_rows_ = rows;
     }
