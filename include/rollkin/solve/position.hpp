@@ -174,7 +174,7 @@ template <class S> struct SolveData {
                     count(kin.reference) + kin.pattern.row.size() * 2 * sizeof(int) +
                     kin.pairs.size() * sizeof(PairState<S>) + kin.spatial.size() * sizeof(Twist<S>) +
                     count(row_scale) * 2 + count(col_scale) + count(ju) + count(rhs) + count(step) +
-                    static_cast<std::size_t>(lu.size() * lu.size()) * sizeof(S) + count(cod.matrixQTZ());
+                    static_cast<std::size_t>(lu.size() * lu.size() + cod.rows() * cod.cols()) * sizeof(S);
     if constexpr (sparse_factorisation_available<S>) b += sparse_lu.bytes();
     return b;
   }

@@ -22,6 +22,8 @@
 #include <Eigen/SparseQR>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -56,8 +58,9 @@ inline Factorisation default_sparse_factorisation() {
   return klu_available ? Factorisation::Klu : Factorisation::EigenSparseLU;
 }
 
-/// Rows of the scaled Jacobian of the unknowns (given as `a`, equations x unknowns, first `rows` rows used)
-/// that are linearly independent, by a rank-revealing sparse QR of its transpose; their number is the rank.
+/// Rows of `a` (the scaled Jacobian of the unknowns, equations x unknowns) that are linearly independent, in
+/// increasing order, by a rank-revealing sparse QR of a^T (SparseQR moves the columns of a^T, the rows of a,
+/// whose remaining norm is below its threshold behind the others); their number is the rank of a.
 inline std::vector<int> independent_rows(const Eigen::SparseMatrix<double>& a) {
   Eigen::SparseMatrix<double> at = a.transpose();
   at.makeCompressed();
