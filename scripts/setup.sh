@@ -28,13 +28,15 @@ log() { echo "[setup] $*" >&2; }
 # ---- 1. packages ---------------------------------------------------------------------------------------
 # Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
 # and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json; libdxflib (DXF) and pugixml (SVG/XML)
-# readers; CLI11 (command-line parsing of build/rollkin and the benchmark). For the tests only: ezdxf and
+# readers; CLI11 (command-line parsing of build/rollkin and the benchmark); SuiteSparse (KLU, the sparse LU of
+# large mechanisms; optional for the build). For the tests only: ezdxf and
 # svgelements, independent producers and readers of the CAD test files; chromium, its driver and selenium for
 # the browser test of the --animate page (tests/browser/test_animation.py).
 packages=(
   g++ cmake make
   libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
   libdxflib-dev libpugixml-dev libcli11-dev
+  libsuitesparse-dev
   python3
 )
 if [[ "$what" == all ]]; then

@@ -189,6 +189,84 @@ template <class S> Fixture<S> eccentric_cam(const S& R, const S& e, bool roller,
   return f;
 }
 
+// ---- generated mechanisms of N loops (tests/test_solve_sparse.cpp and the benchmark's scaling section) ----
+
+/// Radius of disk k of disk_train: 1, 1.5, 0.75, 1.25 repeating (unequal, so the ratios do not cancel).
+template <class S> S disk_train_radius(int k) {
+  const int pattern[4] = {4, 6, 3, 5};
+  return S(pattern[k % 4]) / S(4);
+}
+
+/// Train of n + 1 disks (radii disk_train_radius), each on a revolute to the ground, pivots on the x-axis at
+/// the sum of neighbouring radii, neighbours rolling on each other: n loops, each closed through its own
+/// contact. Variables: phi_0 .. phi_n (phi_0 the input), then (u_k, v_k) of contact k (disk k, disk k+1).
+/// Rolling without slip: r_k dphi_k = -r_k+1 dphi_k+1, so phi_k = (-1)^k (r_0 / r_k) phi_0. Overconstrained:
+/// each loop's centre distance row repeats what the pivots fix (4n equations, 3n unknowns, rank 3n).
+/// Assembled at phi = 0 with contact k on the x-axis (u_k = 0, v_k = pi): the guess is exact.
+template <class S> Fixture<S> disk_train(int n) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true);
+  std::vector<int> rim, pivot;
+  S x(0);
+  for (int k = 0; k <= n; ++k) {
+    const std::string name = "disk" + std::to_string(k);
+    const int disk = b.link(name);
+    if (k > 0) x += disk_train_radius<S>(k - 1) + disk_train_radius<S>(k);
+    rim.push_back(b.contour(disk, "rim", Circle<S>(disk_train_radius<S>(k))));
+    pivot.push_back(b.revolute("pivot" + std::to_string(k), ground, disk, SE2<S>(S(0), Vec2<S>(x, S(0))), SE2<S>(),
+                               "phi"));
+  }
+  for (int k = 0; k < n; ++k) b.contact("mesh" + std::to_string(k), true, rim[k], rim[k + 1], "u", "v");
+  b.driver(pivot[0]);
+  Fixture<S> f{b.build(), VectorX<S>::Zero(3 * n + 1), {}};
+  for (int k = 0; k < n; ++k) f.guess(n + 1 + 2 * k + 1) = pi<S>();
+  return f;
+}
+
+/// Dimensions of bar k of four_bar_chain: pivot spacing 4, input pin radius a, output pin radius c
+/// alternating (1.5, 2) and (2, 1.5), coupler length sqrt(4^2 + (c - a)^2) (pins straight up at rest).
+template <class S> struct ChainBar {
+  S a, c, d, coupler;
+};
+template <class S> ChainBar<S> four_bar_chain_bar(int k) {
+  using std::sqrt;
+  const S a = k % 2 ? S(2) : S(3) / S(2), c = k % 2 ? S(3) / S(2) : S(2), d(4);
+  return {a, c, d, sqrt(d * d + (c - a) * (c - a))};
+}
+
+/// Chain of n four-bars: n + 1 rockers turning about ground pivots (4 apart on the x-axis), rocker k joined
+/// to rocker k + 1 by coupler k (pins at radius a on rocker k and c on rocker k + 1, both straight up, i.e.
+/// at (0, a) and (0, c) in the rockers' frames; four_bar_chain_bar). n loops, 3n equations, 3n unknowns.
+/// Variables: theta_0 .. theta_n (theta_0 the input), then per coupler (psi_k, chi_k): the coupler's angle on
+/// rocker k and rocker k+1's on the coupler. Assembled at theta = 0 (exact guess).
+template <class S> Fixture<S> four_bar_chain(int n) {
+  using std::atan2;
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true);
+  std::vector<int> rocker, pivot;
+  for (int k = 0; k <= n; ++k) {
+    rocker.push_back(b.link("rocker" + std::to_string(k)));
+    pivot.push_back(b.revolute("pivot" + std::to_string(k), ground, rocker[k],
+                               SE2<S>(S(0), Vec2<S>(S(4) * S(k), S(0))), SE2<S>(), "theta"));
+  }
+  std::vector<S> alpha;  // couplers' angles at rest
+  for (int k = 0; k < n; ++k) {
+    const ChainBar<S> bar = four_bar_chain_bar<S>(k);
+    const int coupler = b.link("coupler" + std::to_string(k));
+    b.revolute("A" + std::to_string(k), rocker[k], coupler, SE2<S>(S(0), Vec2<S>(S(0), bar.a)), SE2<S>(), "psi");
+    b.revolute("B" + std::to_string(k), coupler, rocker[k + 1], SE2<S>(S(0), Vec2<S>(bar.coupler, S(0))),
+               SE2<S>(S(0), Vec2<S>(S(0), bar.c)), "chi");
+    alpha.push_back(atan2(bar.c - bar.a, bar.d));
+  }
+  b.driver(pivot[0]);
+  Fixture<S> f{b.build(), VectorX<S>::Zero(3 * n + 1), {}};
+  for (int k = 0; k < n; ++k) {
+    f.guess(n + 1 + 2 * k) = alpha[static_cast<std::size_t>(k)];
+    f.guess(n + 2 + 2 * k) = -alpha[static_cast<std::size_t>(k)];
+  }
+  return f;
+}
+
 /// Assembles a fixture; returns the report (q holds the assembled pose, sd is ready for sweep()).
 template <class S> SolveReport<S> assemble_fixture(const Fixture<S>& f, VectorX<S>& q, SolveData<S>& sd) {
   q = f.guess;

@@ -23,22 +23,81 @@ namespace rollkin {
 template <class S> using VectorX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <class S> using MatrixX = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 
+/// Where the Jacobian's nonzeros sit, fixed per mechanism: each loop's 3 rows times the variables of its
+/// pairs (in loop order, 3 consecutive entries per variable), then each rolling row's two contact
+/// parameters. A variable met twice in a loop has two entries at the same place: they add up.
+struct JacobianPattern {
+  std::vector<int> row, column;  // per entry
+  std::vector<int> loop_begin;   // per loop: its first entry; one past the last loop: the rolling rows' first
+
+  template <class S> explicit JacobianPattern(const Mechanism<S>& m) {
+    int r = 0;
+    for (const auto& loop : m.loops) {
+      loop_begin.push_back(static_cast<int>(row.size()));
+      for (const LoopEdge& e : loop)
+        for (int j = 0; j < m.pairs[e.pair].variable_count(); ++j)
+          for (int k = 0; k < 3; ++k) add(r + k, m.pairs[e.pair].first_variable + j);
+      r += 3;
+    }
+    loop_begin.push_back(static_cast<int>(row.size()));
+    for (int k : m.rolling_pairs) {
+      add(r, m.pairs[k].first_variable);
+      add(r, m.pairs[k].first_variable + 1);
+      ++r;
+    }
+  }
+  int size() const { return static_cast<int>(row.size()); }
+
+ private:
+  void add(int r, int c) {
+    row.push_back(r);
+    column.push_back(c);
+  }
+};
+
+/// Evaluation buffers. The Jacobian is kept either dense (`jacobian`, equation_count x variable_count: the
+/// small mechanisms, whose fixed-size kernels read it directly) or, when constructed with sparse = true, as
+/// the values of its nonzeros in the order of `pattern` (`jacobian_values`): filling it then costs the
+/// nonzeros only, linear in the number of loops, where zeroing the dense matrix alone grows as its square.
 template <class S> struct KinematicsData {
   std::vector<PairState<S>> pairs;
   std::vector<Twist<S>> spatial;   // per variable, current loop's spatial twist (scratch)
   VectorX<S> residual;             // equation_count
-  MatrixX<S> jacobian;             // equation_count x variable_count
+  bool sparse;                     // which of the two Jacobian stores below is filled
+  MatrixX<S> jacobian;             // dense: equation_count x variable_count (empty when sparse)
+  JacobianPattern pattern;         // the nonzeros' places (both stores)
+  VectorX<S> jacobian_values;      // sparse: per entry of `pattern` (empty when dense)
   VectorX<S> bias;                 // gamma = Jdot qdot
   VectorX<S> reference;            // q at assembly: the rolling pairs' arc-length origins
 
-  explicit KinematicsData(const Mechanism<S>& m)
+  explicit KinematicsData(const Mechanism<S>& m, bool sparse_jacobian = false)
       : pairs(m.pairs.size()),
         spatial(m.variable_count()),
         residual(m.equation_count()),
-        jacobian(m.equation_count(), m.variable_count()),
+        sparse(sparse_jacobian),
+        jacobian(sparse ? 0 : m.equation_count(), sparse ? 0 : m.variable_count()),
+        pattern(m),
+        jacobian_values(sparse ? pattern.size() : 0),
         bias(m.equation_count()),
         reference(VectorX<S>::Zero(m.variable_count())),
         origins_(m.variable_count()) {}
+
+  /// out = J x (either store).
+  void jacobian_times(const VectorX<S>& x, VectorX<S>& out) const {
+    if (!sparse) {
+      out.noalias() = jacobian * x;
+      return;
+    }
+    out.setZero(residual.size());
+    for (int e = 0; e < pattern.size(); ++e) out(pattern.row[e]) += jacobian_values(e) * x(pattern.column[e]);
+  }
+  /// The Jacobian as a dense matrix (either store); for diagnostics, not for the per-pose path.
+  MatrixX<S> dense_jacobian() const {
+    if (!sparse) return jacobian;
+    MatrixX<S> j = MatrixX<S>::Zero(residual.size(), static_cast<Eigen::Index>(spatial.size()));
+    for (int e = 0; e < pattern.size(); ++e) j(pattern.row[e], pattern.column[e]) += jacobian_values(e);
+    return j;
+  }
 
   /// Arc length on contour c from reference(i) to u (eq. 4). The origin's primitive s(reference(i)) is
   /// evaluated once and kept until reference(i) changes, so a solve pays one primitive per contact.
@@ -95,6 +154,16 @@ template <class S> void loop_constraints(const Mechanism<S>& m, const std::vecto
     }
   }
   d.residual.template segment<3>(row) = Vec3<S>(left.translation().x(), left.translation().y(), left.angle());
+  if (d.sparse) {  // entries in pattern order: 3 per variable, the loop's pairs in loop order
+    int entry = d.pattern.loop_begin[static_cast<std::size_t>(row / 3)];
+    for (const LoopEdge& e : loop) {
+      const Pair<S>& p = m.pairs[e.pair];
+      for (int j = 0; j < p.variable_count(); ++j, entry += 3)
+        d.jacobian_values.template segment<3>(entry) =
+            residual_rate(left, d.spatial[static_cast<std::size_t>(p.first_variable + j)]);
+    }
+    return;
+  }
   for (const LoopEdge& e : loop) {
     const Pair<S>& p = m.pairs[e.pair];
     for (int j = 0; j < p.variable_count(); ++j) {
@@ -106,7 +175,7 @@ template <class S> void loop_constraints(const Mechanism<S>& m, const std::vecto
 
 /// Residual and Jacobian at the pair states in d (evaluate_pairs first).
 template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX<S>& q, KinematicsData<S>& d) {
-  d.jacobian.setZero();
+  if (!d.sparse) d.jacobian.setZero();
   int row = 0;
   for (const auto& loop : m.loops) {
     loop_constraints(m, loop, row, d);
@@ -118,8 +187,14 @@ template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX
     const PairState<S>& st = d.pairs[k];
     d.residual(row) = d.arc_length_from_reference(m.contours[p.contour_a], i, q(i)) +
                       d.arc_length_from_reference(m.contours[p.contour_b], i + 1, q(i + 1));
-    d.jacobian(row, i) = st.contact[0].speed;
-    d.jacobian(row, i + 1) = st.contact[1].speed;
+    if (d.sparse) {
+      const int entry = d.pattern.loop_begin.back() + 2 * (row - 3 * static_cast<int>(m.loops.size()));
+      d.jacobian_values(entry) = st.contact[0].speed;
+      d.jacobian_values(entry + 1) = st.contact[1].speed;
+    } else {
+      d.jacobian(row, i) = st.contact[0].speed;
+      d.jacobian(row, i + 1) = st.contact[1].speed;
+    }
     ++row;
   }
 }

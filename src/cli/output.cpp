@@ -433,7 +433,7 @@ std::string draw_svg(const OutputContext& ctx) {
 }
 
 AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd) {
-  MatrixX<double> j = sd.kin.jacobian;
+  MatrixX<double> j = sd.kin.dense_jacobian();  // either store (the sparse path keeps only the nonzeros)
   for (int c = 0; c < m.variable_count(); ++c) j.col(c) = j.col(c).cwiseQuotient(sd.row_scale) * m.variable_scale(c);
   Eigen::CompleteOrthogonalDecomposition<MatrixX<double>> cod(j);
   AssemblyRank r;

@@ -10,6 +10,7 @@
 #include "rollkin/kinematics.hpp"
 #include "rollkin/solve/report.hpp"
 #include "rollkin/solve/small_lu.hpp"
+#include "rollkin/solve/sparse_lu.hpp"
 
 #include <Eigen/QR>
 
@@ -28,13 +29,23 @@ template <class S> struct NewtonSettings {
   S consistency_tolerance = tolerance<S>(S(1) / S(2));
 };
 
+/// The sparse factors SolveData<S> holds: SparseUnknownsLU for double, nothing for other scalars (MPFR).
+struct NoSparseFactors {};
+template <class S>
+using SparseFactors = std::conditional_t<sparse_factorisation_available<S>, SparseUnknownsLU, NoSparseFactors>;
+
 /// Solve workspace: buffers sized once per mechanism; a solve does not allocate per Newton step.
 ///
-/// Factorisation: a square system whose LU is well conditioned is solved by partial-pivot LU (SmallLU, many
-/// times cheaper than QR at the sizes of planar mechanisms); a non-square system (redundant constraints)
-/// or a numerically singular one by the rank-revealing complete orthogonal decomposition, whose solve is the
-/// minimum-norm least-squares step.
+/// Factorisation (chosen once per mechanism, `method`): small mechanisms take the dense path: a square
+/// system whose LU is well conditioned is solved by partial-pivot LU (SmallLU, many times cheaper than QR at
+/// the sizes of planar mechanisms); a non-square system (redundant constraints) or a numerically singular one
+/// by the rank-revealing complete orthogonal decomposition, whose solve is the minimum-norm least-squares
+/// step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp) factors the independent
+/// rows, found once, by a sparse LU whose symbolic analysis is done once; a pose where that LU is singular
+/// or ill-conditioned takes the dense decomposition instead (same statuses, rank and condition as the dense
+/// path) and the independent rows are chosen again at the next pose.
 template <class S> struct SolveData {
+  Factorisation method;                  // Dense, EigenSparseLU or Klu (Automatic resolved)
   KinematicsData<S> kin;
   VectorX<S> row_scale, col_scale;       // residual and variable scales
   VectorX<S> row_weight;                 // 1 / row_scale: the hot path multiplies instead of dividing
@@ -43,23 +54,27 @@ template <class S> struct SolveData {
   VectorX<S> rhs, step;                  // scaled
   SmallLU<S> lu;
   Eigen::CompleteOrthogonalDecomposition<MatrixX<S>> cod;
+  SparseFactors<S> sparse_lu;
   NewtonSettings<S> settings;
   // State of the current factorisation.
   bool lu_active = false;
+  bool sparse_active = false;
   int rank = 0;
   S condition = S(0);
 
-  explicit SolveData(const Mechanism<S>& m)
-      : kin(m),
+  explicit SolveData(const Mechanism<S>& m, Factorisation how = Factorisation::Automatic)
+      : method(resolve(m, how)),
+        kin(m, method != Factorisation::Dense),
         row_scale(m.equation_count()),
         col_scale(m.unknowns.size()),
         row_weight(m.equation_count()),
-        ju(m.equation_count(), m.unknowns.size()),
+        ju(sparse() ? 0 : m.equation_count(), sparse() ? 0 : m.unknowns.size()),
         unknowns(m.unknowns),
         rhs(m.equation_count()),
         step(m.unknowns.size()),
-        lu(m.unknowns.size()),
-        cod(m.equation_count(), m.unknowns.size()) {
+        lu(sparse() ? 0 : m.unknowns.size()),
+        cod(sparse() ? 0 : m.equation_count(), sparse() ? 0 : m.unknowns.size()),
+        unknown_of_variable_(static_cast<std::size_t>(m.variable_count()), -1) {
     int row = 0;
     for (std::size_t l = 0; l < m.loops.size(); ++l, row += 3) {
       row_scale(row) = m.length_scale;
@@ -68,33 +83,53 @@ template <class S> struct SolveData {
     }
     for (; row < m.equation_count(); ++row) row_scale(row) = m.length_scale;
     row_weight = row_scale.cwiseInverse();
-    for (std::size_t c = 0; c < m.unknowns.size(); ++c) col_scale(c) = m.variable_scale(m.unknowns[c]);
+    for (std::size_t c = 0; c < m.unknowns.size(); ++c) {
+      col_scale(c) = m.variable_scale(m.unknowns[c]);
+      unknown_of_variable_[static_cast<std::size_t>(m.unknowns[c])] = static_cast<int>(c);
+    }
     using std::max;
     settings.consistency_tolerance =
         max(settings.consistency_tolerance, S(S(16) * m.representation_error / m.length_scale));
   }
 
+  /// The factorisation `how` asks for, with Automatic and the sparse back ends resolved for this mechanism
+  /// and scalar (a sparse request for a scalar other than double gives Dense; Klu without KLU, Eigen's).
+  static Factorisation resolve(const Mechanism<S>& m, Factorisation how) {
+    if (!sparse_factorisation_available<S> || m.unknowns.empty()) return Factorisation::Dense;
+    if (how == Factorisation::Automatic)
+      return static_cast<int>(m.unknowns.size()) >= sparse_threshold ? default_sparse_factorisation()
+                                                                      : Factorisation::Dense;
+    if (how == Factorisation::Klu && !klu_available) return Factorisation::EigenSparseLU;
+    return how;
+  }
+  bool sparse() const { return method != Factorisation::Dense; }
+
   /// Entry (r, c) of the scaled Jacobian of the unknowns R^-1 J_u C: row r divided by its residual scale,
-  /// column c (variable unknowns[c]) multiplied by its variable scale.
+  /// column c (variable unknowns[c]) multiplied by its variable scale. Dense Jacobian only.
   S scaled_jacobian(Eigen::Index r, Eigen::Index c) const {
     return kin.jacobian(r, unknowns[static_cast<std::size_t>(c)]) * row_weight(r) * col_scale(c);
   }
 
-  /// Factors the first `rows` rows of the scaled Jacobian of the unknowns (kin.jacobian evaluated),
-  /// choosing LU or COD as described above. The LU reads the scaled entries straight from kin.jacobian;
-  /// ju is filled only for the COD. The condition estimate is
-  /// the pivot ratio of the triangular factor (max |u_ii| / min |u_ii| for LU, |r_11| / |r_nn| for the
-  /// column-pivoted QR inside COD): cheap, and it grows like 1/sigma_min toward a singular pose.
+  /// Factors the first `rows` rows of the scaled Jacobian of the unknowns (kin's Jacobian evaluated),
+  /// choosing LU, sparse LU or COD as described above. The LU reads the scaled entries straight from
+  /// kin.jacobian; ju is filled only for the COD. The condition estimate is the pivot ratio of the
+  /// triangular factor (max |u_ii| / min |u_ii| for the LUs, |r_11| / |r_nn| for the column-pivoted QR inside
+  /// COD): cheap, and it grows like 1/sigma_min toward a singular pose.
   void factor(int rows) {
     using std::abs;
-    const auto n = ju.cols();
+    const auto n = static_cast<Eigen::Index>(unknowns.size());
+    lu_active = sparse_active = false;
     if (n == 0) {  // nothing to solve (every pair variable is an input): forward kinematics only
-      lu_active = false;
       rank = 0;
       condition = S(1);
       return;
     }
-    if (rows == n && n > 0) {
+    if (sparse()) {
+      if constexpr (sparse_factorisation_available<S>) {
+        if (factor_sparse(rows)) return;
+      }
+      fill_ju_from_sparse();
+    } else if (rows == n) {
       const bool nonzero_pivots = lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); });
       const S& largest = lu.largest_pivot();
       const S& smallest = lu.smallest_pivot();
@@ -105,9 +140,9 @@ template <class S> struct SolveData {
         return;
       }
     }
-    lu_active = false;
-    for (Eigen::Index c = 0; c < n; ++c)
-      for (Eigen::Index r = 0; r < ju.rows(); ++r) ju(r, c) = scaled_jacobian(r, c);
+    if (!sparse())
+      for (Eigen::Index c = 0; c < n; ++c)
+        for (Eigen::Index r = 0; r < ju.rows(); ++r) ju(r, c) = scaled_jacobian(r, c);
     if (rows == ju.rows()) cod.compute(ju);
     else cod.compute(ju.topRows(rows));
     rank = static_cast<int>(cod.rank());
@@ -115,14 +150,85 @@ template <class S> struct SolveData {
                                       : S(abs(cod.matrixQTZ()(0, 0)) / abs(cod.matrixQTZ()(n - 1, n - 1)));
   }
   /// x = J^-1 b (LU) or the minimum-norm least-squares solution (COD), in the scaled variables.
-  template <class B> void solve(const B& b, VectorX<S>& x) const {
+  template <class B> void solve(const B& b, VectorX<S>& x) {
     if (lu_active) lu.solve(b, x);
-    else if (ju.cols() == 0) x.resize(0);
-    else x.noalias() = cod.solve(b);
+    else if (unknowns.empty()) x.resize(0);
+    else if (sparse_active) {
+      if constexpr (sparse_factorisation_available<S>) sparse_lu.solve(b, x);
+    } else x.noalias() = cod.solve(b);
   }
-  /// Sign of det of the scaled Jacobian of the unknowns when the LU is active (square, regular), else 0
-  /// (unknown). The column and row scales are positive, so it is the sign of det J_u itself.
-  int determinant_sign() const { return lu_active ? lu.determinant_sign() : 0; }
+  /// Sign of det of the scaled Jacobian of the unknowns when an LU is active (square, regular), else 0
+  /// (unknown). The column and row scales are positive, so it is the sign of det J_u itself (with redundant
+  /// constraints, of the independent rows the sparse path factors).
+  int determinant_sign() const {
+    if (lu_active) return lu.determinant_sign();
+    if constexpr (sparse_factorisation_available<S>)
+      if (sparse_active) return sparse_lu.determinant_sign();
+    return 0;
+  }
+
+  /// Bytes of the solve buffers and factors (the mechanism itself not counted).
+  std::size_t bytes() const {
+    const auto count = [](const auto& v) { return static_cast<std::size_t>(v.size()) * sizeof(S); };
+    std::size_t b = count(kin.residual) + count(kin.jacobian) + count(kin.jacobian_values) + count(kin.bias) +
+                    count(kin.reference) + kin.pattern.row.size() * 2 * sizeof(int) +
+                    kin.pairs.size() * sizeof(PairState<S>) + kin.spatial.size() * sizeof(Twist<S>) +
+                    count(row_scale) * 2 + count(col_scale) + count(ju) + count(rhs) + count(step) +
+                    static_cast<std::size_t>(lu.size() * lu.size() + cod.rows() * cod.cols()) * sizeof(S);
+    if constexpr (sparse_factorisation_available<S>) b += sparse_lu.bytes();
+    return b;
+  }
+
+ private:
+  std::vector<int> unknown_of_variable_;  // a variable's column among the unknowns, -1 for a driver
+  int selected_for_rows_ = -1;            // the row count the sparse LU's independent rows were chosen for
+
+  /// Sparse LU of the independent rows among the first `rows` (chosen at the first pose, again after a
+  /// pose where they failed or were fewer than the unknowns). False when the dense decomposition must do
+  /// this pose.
+  bool factor_sparse(int rows) {
+    const auto n = static_cast<int>(unknowns.size());
+    if (rows < n) return false;
+    if (!sparse_lu.ready() || selected_for_rows_ != rows) {
+      std::vector<int> selected(static_cast<std::size_t>(rows));
+      for (int r = 0; r < rows; ++r) selected[static_cast<std::size_t>(r)] = r;
+      if (rows > n) selected = independent_rows(scaled_sparse_jacobian(rows));
+      if (static_cast<int>(selected.size()) < n) return false;  // rank deficient here: the COD's minimum-norm step
+      sparse_lu.setup(kin.pattern, unknown_of_variable_, selected, row_weight, col_scale, method);
+      selected_for_rows_ = rows;
+    }
+    const bool ok = sparse_lu.factor(kin.jacobian_values);
+    const double largest = sparse_lu.largest_pivot(), smallest = sparse_lu.smallest_pivot();
+    if (!ok || !(smallest > largest * epsilon<S>() * S(n))) {
+      selected_for_rows_ = -1;  // singular here: choose the independent rows again at the next pose
+      return false;
+    }
+    sparse_active = true;
+    rank = n;
+    condition = largest / smallest;
+    return true;
+  }
+
+  /// The first `rows` rows of the scaled Jacobian of the unknowns as a sparse matrix (from kin's nonzeros).
+  Eigen::SparseMatrix<S> scaled_sparse_jacobian(int rows) const {
+    std::vector<Eigen::Triplet<S>> t;
+    for (int e = 0; e < kin.pattern.size(); ++e) {
+      const int r = kin.pattern.row[e], c = unknown_of_variable_[static_cast<std::size_t>(kin.pattern.column[e])];
+      if (r < rows && c >= 0) t.emplace_back(r, c, kin.jacobian_values(e) * row_weight(r) * col_scale(c));
+    }
+    Eigen::SparseMatrix<S> a(rows, static_cast<Eigen::Index>(unknowns.size()));
+    a.setFromTriplets(t.begin(), t.end());
+    return a;
+  }
+
+  /// ju from kin's nonzeros, for the COD at a pose the sparse LU cannot take (allocated at the first).
+  void fill_ju_from_sparse() {
+    ju.setZero(row_scale.size(), static_cast<Eigen::Index>(unknowns.size()));
+    for (int e = 0; e < kin.pattern.size(); ++e) {
+      const int r = kin.pattern.row[e], c = unknown_of_variable_[static_cast<std::size_t>(kin.pattern.column[e])];
+      if (c >= 0) ju(r, c) += kin.jacobian_values(e) * row_weight(r) * col_scale(c);
+    }
+  }
 };
 
 /// Max-norm of a vector whose entries are multiplied by weight (the inverse of their scales).
@@ -198,10 +304,15 @@ template <class S> void solve_velocity(const Mechanism<S>& m, SolveData<S>& sd, 
   qdot.setZero(m.variable_count());
   for (std::size_t k = 0; k < m.drivers.size(); ++k) qdot(m.drivers[k]) = driver_rates(k);
   // rhs = -R^-1 J_d qdot_d: only the drivers' columns (the unknowns' rates are still zero).
-  for (Eigen::Index r = 0; r < sd.rhs.size(); ++r) {
-    S sum(0);
-    for (std::size_t k = 0; k < m.drivers.size(); ++k) sum += sd.kin.jacobian(r, m.drivers[k]) * driver_rates(k);
-    sd.rhs(r) = -sum * sd.row_weight(r);
+  if (sd.kin.sparse) {
+    sd.kin.jacobian_times(qdot, sd.rhs);
+    sd.rhs = -sd.rhs.cwiseProduct(sd.row_weight);
+  } else {
+    for (Eigen::Index r = 0; r < sd.rhs.size(); ++r) {
+      S sum(0);
+      for (std::size_t k = 0; k < m.drivers.size(); ++k) sum += sd.kin.jacobian(r, m.drivers[k]) * driver_rates(k);
+      sd.rhs(r) = -sum * sd.row_weight(r);
+    }
   }
   sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdot(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
@@ -219,7 +330,8 @@ template <class S> VectorX<S> solve_acceleration(const Mechanism<S>& m, const Ve
   for (std::size_t k = 0; k < m.drivers.size(); ++k) qdd(m.drivers[k]) = driver_accels(k);
   evaluate_pairs(m, q, &qdot, 3, sd.kin);
   compute_bias(m, qdot, sd.kin);
-  sd.rhs = -(sd.kin.jacobian * qdd + sd.kin.bias).cwiseProduct(sd.row_weight);
+  sd.kin.jacobian_times(qdd, sd.rhs);
+  sd.rhs = -(sd.rhs + sd.kin.bias).cwiseProduct(sd.row_weight);
   sd.solve(sd.rhs, sd.step);
   for (std::size_t c = 0; c < m.unknowns.size(); ++c) qdd(m.unknowns[c]) = sd.step(c) * sd.col_scale(c);
   return qdd;
@@ -236,7 +348,7 @@ template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q,
     Mechanism<S> closing = m;
     closing.drivers.insert(closing.drivers.end(), held.begin(), held.end());
     closing.finalize();
-    SolveData<S> closing_data(closing);
+    SolveData<S> closing_data(closing, sd.method);
     closing_data.settings = sd.settings;
     rep = solve_position(closing, q, closing_data, 3 * static_cast<int>(m.loops.size()));
     if (rep.status == SolveStatus::NoConvergence || rep.status == SolveStatus::CannotAssemble) {
