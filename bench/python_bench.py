@@ -102,7 +102,7 @@ def main():
     if not args.no_dask:
         dask = dask_readings(variants, r, 2)
         rate_row("... dask.distributed, 2 local workers", dask, n)
-        print("| overhead of dask per variant (2 workers x C++ loop time - wall time) | %.1f us |" %
+        print("| overhead of dask per variant (2 workers x wall time per variant - C++ loop) | %.1f us |" %
               (2 * per_variant(dask) - per_variant(bare)))
     print("load average after: %s" % load())
 
