@@ -189,17 +189,19 @@ BOOST_AUTO_TEST_CASE(streamed_outputs_are_written_in_blocks_all_or_nothing) {
   write_text(dir / "b.csv", "old b");
   std::string expected;
   for (int k = 0; k < 300000; ++k) expected += std::to_string(k) + "\n";  // about 2 MB: three blocks
+  // The writer of a.csv: the same numbers line by line, never holding more than a block or so.
+  auto stream_numbers = [](rollkin::io::OutputSink& sink) {
+    for (int k = 0; k < 300000; ++k) {
+      sink.buffer() += std::to_string(k) + "\n";
+      sink.flush_full();
+      BOOST_TEST(sink.buffer().size() < 2 * rollkin::io::OutputSink::kBlock);
+    }
+  };
   {
     OutputSet out;
     const auto a = out.add("--csv", (dir / "a.csv").string());
     const auto b = out.add("--plot", (dir / "b.csv").string());
-    out.set_writer(a, [](rollkin::io::OutputSink& sink) {
-      for (int k = 0; k < 300000; ++k) {
-        sink.buffer() += std::to_string(k) + "\n";
-        sink.flush_full();
-        BOOST_TEST(sink.buffer().size() < 2 * rollkin::io::OutputSink::kBlock);
-      }
-    });
+    out.set_writer(a, stream_numbers);
     out.set_writer(b, [](rollkin::io::OutputSink& sink) {
       sink.buffer() += "partial";
       throw std::runtime_error("the writer failed");
@@ -212,12 +214,7 @@ BOOST_AUTO_TEST_CASE(streamed_outputs_are_written_in_blocks_all_or_nothing) {
   OutputSet out;
   const auto a = out.add("--csv", (dir / "a.csv").string());
   const auto b = out.add("--plot", (dir / "b.csv").string());
-  out.set_writer(a, [](rollkin::io::OutputSink& sink) {
-    for (int k = 0; k < 300000; ++k) {
-      sink.buffer() += std::to_string(k) + "\n";
-      sink.flush_full();
-    }
-  });
+  out.set_writer(a, stream_numbers);
   out.set(b, "new b");
   out.commit();
   BOOST_TEST(read_text(dir / "a.csv") == expected);
