@@ -489,30 +489,35 @@ template <class S> S estimate_substeps(const Mechanism<S>& m, const VectorX<S>& 
   return (up + down) / (cfg.max_step * m.variable_scale(var)) + S(static_cast<long long>(inputs.size()));
 }
 
-/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
-/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
-template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
-                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
-                                        const ContinuationSettings<S>& cfg = {}) {
-  // Sized once for every requested input: storing a pose below allocates nothing.
-  SweepResult<S> out(assembly, inputs, static_cast<Eigen::Index>(m.variable_count()),
-                     assembly.ok() ? SolveStatus::NotReached : assembly.status);
-  const int var = m.drivers[driver];
-  if (!assembly.ok()) return out;
+namespace detail {
 
+/// Sorts indices by `before`; a grid in either direction is already in order or reversed, in O(n).
+template <class Before> void nearest_first(std::vector<std::size_t>& indices, Before before) {
+  if (std::is_sorted(indices.begin(), indices.end(), before)) return;
+  const auto after = [&](std::size_t a, std::size_t b) { return before(b, a); };
+  if (std::is_sorted(indices.begin(), indices.end(), after))
+    std::reverse(indices.begin(), indices.end());
+  else
+    std::sort(indices.begin(), indices.end(), before);
+}
+
+/// sweep()'s continuation from the assembled pose q0 to every requested input, stored into out.
+template <class S> void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, int driver,
+                                    const std::vector<S>& inputs, const ContinuationSettings<S>& cfg, SweepResult<S>& out) {
+  const int var = m.drivers[driver];
   // Requested inputs on each side of the assembly input, nearest first.
   std::vector<std::size_t> up, down;
   up.reserve(inputs.size());
   down.reserve(inputs.size());
   for (std::size_t i = 0; i < inputs.size(); ++i) (inputs[i] >= q0(var) ? up : down).push_back(i);
-  std::sort(up.begin(), up.end(), [&](auto a, auto b) { return inputs[a] < inputs[b]; });
-  std::sort(down.begin(), down.end(), [&](auto a, auto b) { return inputs[a] > inputs[b]; });
+  nearest_first(up, [&](auto a, auto b) { return inputs[a] < inputs[b]; });
+  nearest_first(down, [&](auto a, auto b) { return inputs[a] > inputs[b]; });
 
   for (const auto* side : {&up, &down}) {
     if (side->empty()) continue;
     detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
-      if (cfg.cancel && cfg.cancel->load(std::memory_order_relaxed)) return out;
+      if (cfg.cancel && cfg.cancel->load(std::memory_order_relaxed)) return;
       const std::size_t at = (*side)[k];
       const SolveReport<S> rep = tracer.advance(inputs[at]);
       if (!rep.has_pose()) {  // this input and all beyond it on this side are past the limit
@@ -529,6 +534,20 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
       out.set_pose(at, tracer.q(), tracer.v(), rep);
     }
   }
+}
+
+}  // namespace detail
+
+/// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
+/// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
+template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
+                                        const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
+                                        const ContinuationSettings<S>& cfg = {}) {
+  // Sized once for every requested input: storing a pose below allocates nothing.
+  SweepResult<S> out(assembly, inputs, static_cast<Eigen::Index>(m.variable_count()),
+                     assembly.ok() ? SolveStatus::NotReached : assembly.status);
+  if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
+  out.zero_columns_without_values();
   return out;
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "rollkin/kinematics.hpp"
+#include "rollkin/solve/huge_pages.hpp"
 #include "rollkin/solve/report.hpp"
 
 #include <cstddef>
@@ -107,15 +108,23 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     return *this;
   }
 
-  /// Room for `inputs.size()` poses of `variables` variables, each with status `status` and no values yet.
+  /// Room for `inputs.size()` poses of `variables` variables, each with status `status` and no values yet
+  /// (their columns are unwritten until set_pose() or zero_columns_without_values()).
   SweepResult(const SolveReport<S>& assembly, const std::vector<S>& inputs, Eigen::Index variables, SolveStatus status) {
     const auto n = static_cast<Eigen::Index>(inputs.size());
     this->assembly = assembly;
     this->inputs_ = inputs;
-    this->q_.setZero(variables, n);
-    this->qdot_.setZero(variables, n);
-    this->records_.assign(inputs.size(), Record{});
-    for (Record& r : this->records_) r.status = status;
+    // Allocated and advised for huge pages (huge_pages.hpp), not written here: set_pose() writes each column
+    // once and zero_columns_without_values() the rest, so the memory is touched once.
+    for (MatrixX<S>* m : {&this->q_, &this->qdot_}) {
+      m->resize(variables, n);
+      advise_huge_pages(m->data(), static_cast<std::size_t>(m->size()) * sizeof(S));
+    }
+    Record blank;
+    blank.status = status;
+    this->records_.reserve(inputs.size());
+    advise_huge_pages(this->records_.data(), inputs.size() * sizeof(Record));
+    this->records_.assign(inputs.size(), blank);
   }
 
   std::size_t size() const { return this->records_.size(); }
@@ -167,6 +176,16 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     if (fits_record(rep)) return;
     r.full = static_cast<std::int32_t>(this->full_.size());
     this->full_.push_back(rep);
+  }
+
+  /// Zeroes the columns of the poses that hold no values (the constructor leaves the columns unwritten);
+  /// sweep() calls it last.
+  void zero_columns_without_values() {
+    for (std::size_t k = 0; k < size(); ++k)
+      if (!has_pose(k)) {
+        this->q_.col(static_cast<Eigen::Index>(k)).setZero();
+        this->qdot_.col(static_cast<Eigen::Index>(k)).setZero();
+      }
   }
 
   /// Gives pose k the report already stored for pose `like` (no copy of a long report).
