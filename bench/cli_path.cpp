@@ -6,6 +6,8 @@
 //   - cli: `rollkin solve examples/paper_fourbar.json --from -50 --to 100 --step 0.001` as a child process,
 //     without output and with --csv FILE (wall time from spawn to exit, everything included: start-up,
 //     scene, assembly, sweep, output), and the child's peak resident memory (wait4's ru_maxrss);
+//   - jobs: eight copies of the scene in one `rollkin solve s1.json ... s8.json --step 0.005` run with --jobs 1
+//     and with --jobs <cores> (wall time; the speed-up against the target >= 0.8 x cores);
 //   - scipy: bench/scipy_paper.py (fsolve with quad arc lengths) with /usr/bin/python3, fewer poses (it takes
 //     about a millisecond each), per pose.
 // Medians over --repeats runs (alternating the cases, so that the machine's load drifts evenly). Prints a
@@ -29,7 +31,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -160,6 +165,31 @@ int main(int argc, char** argv) {
     rss_csv.push_back(b.max_rss_mb);
   }
   std::remove(csv.c_str());
+
+  // Several scenes at once: eight copies of the scene (temporary files), one job against all cores.
+  namespace fs = std::filesystem;
+  const fs::path copies = fs::temp_directory_path() / ("rollkin_bench_cli." + std::to_string(getpid()));
+  fs::create_directories(copies);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::string> one_job{rollkin, "solve"};
+  for (int i = 1; i <= 8; ++i) {
+    const fs::path copy = copies / ("s" + std::to_string(i) + ".json");
+    fs::copy_file(scene_file, copy, fs::copy_options::overwrite_existing);
+    one_job.push_back(copy.string());
+  }
+  for (const char* a : {"--from", "-50", "--to", "100", "--step", "0.005", "--jobs"}) one_job.push_back(a);
+  std::vector<std::string> all_jobs = one_job;
+  one_job.push_back("1");
+  all_jobs.push_back(std::to_string(cores));
+  std::vector<double> jobs1, jobs_all;
+  for (int r = 0; r < repeats; ++r) {
+    const Child a = run_child(one_job), b = run_child(all_jobs);
+    bad_status += (a.status != 0) + (b.status != 0);
+    jobs1.push_back(a.seconds);
+    jobs_all.push_back(b.seconds);
+  }
+  fs::remove_all(copies);
+
   double scipy = -1;
   std::string scipy_check;
   if (!no_scipy) scipy = scipy_us_per_pose(source + "/bench/scipy_paper.py", scipy_poses, scipy_check);
@@ -184,6 +214,14 @@ int main(int argc, char** argv) {
   if (scipy > 0)
     std::printf("| SciPy fsolve + quad (%d poses, phi(-50) = %s deg) | %.1f | %.0f | | |\n", scipy_poses, scipy_check.c_str(),
                 scipy, scipy / h);
+  const double speedup = median(jobs1) / median(jobs_all);
+  std::printf("\nSeveral scenes at once: 8 copies, 30001 poses each, wall time (min-max)\n");
+  std::printf("| --jobs | s | speed-up | target |\n|---:|---:|---:|---|\n");
+  std::printf("| 1 | %.3f (%.3f-%.3f) | 1.00 | |\n", median(jobs1), *std::min_element(jobs1.begin(), jobs1.end()),
+              *std::max_element(jobs1.begin(), jobs1.end()));
+  std::printf("| %d (cores) | %.3f (%.3f-%.3f) | %.2f = %.2f x cores | %s (>= 0.8 x cores) |\n", cores, median(jobs_all),
+              *std::min_element(jobs_all.begin(), jobs_all.end()), *std::max_element(jobs_all.begin(), jobs_all.end()),
+              speedup, speedup / cores, verdict(speedup >= 0.8 * cores));
   if (bad_status) std::printf("WARNING: %d rollkin runs did not exit 0\n", bad_status);
   return 0;
 }
