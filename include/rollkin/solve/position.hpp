@@ -38,9 +38,10 @@ using SparseFactors = std::conditional_t<sparse_factorisation_available<S>, Spar
 ///
 /// Factorisation (chosen once per mechanism, `method`): small mechanisms take the dense path: a square
 /// system whose LU is well conditioned is solved by partial-pivot LU (SmallLU, many times cheaper than QR at
-/// the sizes of planar mechanisms); a non-square system (redundant constraints) or a numerically singular one
-/// by the rank-revealing complete orthogonal decomposition, whose solve is the minimum-norm least-squares
-/// step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp) factors the independent
+/// the sizes of planar mechanisms); a system with redundant constraints by the same LU on independent rows,
+/// chosen once by a rank-revealing QR and again only where they fail (factor_selected_rows); a rank-deficient
+/// or numerically singular system by the rank-revealing complete orthogonal decomposition, whose solve is the
+/// minimum-norm least-squares step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp) factors the independent
 /// rows, found once, by a sparse LU whose symbolic analysis is done once; a pose where that LU is singular
 /// or ill-conditioned takes the dense decomposition instead (same statuses, rank and condition as the dense
 /// path) and the independent rows are chosen again at the next pose.
@@ -118,7 +119,7 @@ template <class S> struct SolveData {
   void factor(int rows) {
     using std::abs;
     const auto n = static_cast<Eigen::Index>(unknowns.size());
-    lu_active = sparse_active = false;
+    lu_active = sparse_active = lu_on_selected_rows_ = false;
     if (n == 0) {  // nothing to solve (every pair variable is an input): forward kinematics only
       rank = 0;
       condition = S(1);
@@ -130,15 +131,9 @@ template <class S> struct SolveData {
       }
       fill_ju_from_sparse();
     } else if (rows == n) {
-      const bool nonzero_pivots = lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); });
-      const S& largest = lu.largest_pivot();
-      const S& smallest = lu.smallest_pivot();
-      if (nonzero_pivots && smallest > largest * epsilon<S>() * S(static_cast<int>(n))) {
-        lu_active = true;
-        rank = static_cast<int>(n);
-        condition = largest / smallest;
-        return;
-      }
+      if (accept_lu(lu.compute([this](Eigen::Index r, Eigen::Index c) { return scaled_jacobian(r, c); }))) return;
+    } else if (factor_selected_rows(rows)) {
+      return;
     }
     if (!sparse())
       for (Eigen::Index c = 0; c < n; ++c)
@@ -149,9 +144,13 @@ template <class S> struct SolveData {
     condition = rank < n || rank == 0 ? std::numeric_limits<S>::infinity()
                                       : S(abs(cod.matrixQTZ()(0, 0)) / abs(cod.matrixQTZ()(n - 1, n - 1)));
   }
-  /// x = J^-1 b (LU) or the minimum-norm least-squares solution (COD), in the scaled variables.
+  /// x = J^-1 b (LU; of the independent rows of a redundant system) or the minimum-norm least-squares
+  /// solution (COD), in the scaled variables.
   template <class B> void solve(const B& b, VectorX<S>& x) {
-    if (lu_active) lu.solve(b, x);
+    if (lu_on_selected_rows_) {
+      for (std::size_t i = 0; i < selected_rows_.size(); ++i) selected_rhs_(static_cast<Eigen::Index>(i)) = b(selected_rows_[i]);
+      lu.solve(selected_rhs_, x);
+    } else if (lu_active) lu.solve(b, x);
     else if (unknowns.empty()) x.resize(0);
     else if (sparse_active) {
       if constexpr (sparse_factorisation_available<S>) sparse_lu.solve(b, x);
@@ -182,6 +181,66 @@ template <class S> struct SolveData {
  private:
   std::vector<int> unknown_of_variable_;  // a variable's column among the unknowns, -1 for a driver
   int selected_for_rows_ = -1;            // the row count the sparse LU's independent rows were chosen for
+  // Dense redundant systems: the independent rows the LU factors, the row count they were chosen for, the
+  // pivot ratio of their LU when chosen, and the right-hand side gathered on them.
+  std::vector<Eigen::Index> selected_rows_;
+  int selected_dense_for_ = -1;
+  S selected_condition_ = S(0);
+  VectorX<S> selected_rhs_;
+  bool lu_on_selected_rows_ = false;  // the active LU is that of selected_rows_
+
+  /// The LU just computed is used when its pivots are nonzero and not below n eps of the largest.
+  bool accept_lu(bool nonzero_pivots) {
+    const auto n = static_cast<int>(unknowns.size());
+    const S& largest = lu.largest_pivot();
+    const S& smallest = lu.smallest_pivot();
+    if (!nonzero_pivots || !(smallest > largest * epsilon<S>() * S(n))) return false;
+    lu_active = true;
+    rank = n;
+    condition = largest / smallest;
+    return true;
+  }
+
+  /// A dense system with more rows than unknowns (redundant constraints): the LU of n independent rows among
+  /// the first `rows`. They are chosen by a column-pivoted QR of the transposed Jacobian (its first n pivots)
+  /// at the first pose, and again only where their LU becomes singular or its pivot ratio grows 16-fold over
+  /// the one it had when they were chosen (rows that were independent may become a poor choice along the
+  /// motion while others stay well conditioned). False when the COD must do this pose (rank below n), as on
+  /// the sparse path.
+  bool factor_selected_rows(int rows) {
+    const auto n = static_cast<Eigen::Index>(unknowns.size());
+    if (rows < n) return false;
+    const bool chosen_here = selected_dense_for_ != rows;
+    if (chosen_here && !choose_selected_rows(rows)) return false;
+    const bool regular = accept_lu(lu.compute([this](Eigen::Index r, Eigen::Index c) {
+      return scaled_jacobian(selected_rows_[static_cast<std::size_t>(r)], c);
+    }));
+    if (regular && chosen_here) selected_condition_ = condition;
+    if (regular && (chosen_here || !(condition > S(16) * selected_condition_))) {
+      lu_on_selected_rows_ = true;
+      return true;
+    }
+    selected_dense_for_ = -1;  // choose again, here
+    lu_active = false;
+    return !chosen_here && factor_selected_rows(rows);
+  }
+
+  /// The first n column pivots of the column-pivoted QR of the transposed scaled Jacobian (first `rows`
+  /// rows), in increasing order; false if its rank is below n.
+  bool choose_selected_rows(int rows) {
+    const auto n = static_cast<Eigen::Index>(unknowns.size());
+    MatrixX<S> transposed(n, rows);
+    for (Eigen::Index r = 0; r < rows; ++r)
+      for (Eigen::Index c = 0; c < n; ++c) transposed(c, r) = scaled_jacobian(r, c);
+    const Eigen::ColPivHouseholderQR<MatrixX<S>> qr(transposed);
+    if (qr.rank() < n) return false;
+    selected_rows_.resize(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) selected_rows_[static_cast<std::size_t>(i)] = qr.colsPermutation().indices()(i);
+    std::sort(selected_rows_.begin(), selected_rows_.end());
+    selected_rhs_.resize(n);
+    selected_dense_for_ = rows;
+    return true;
+  }
 
   /// Sparse LU of the independent rows among the first `rows` (chosen at the first pose, again after a
   /// pose where they failed or were fewer than the unknowns). False when the dense decomposition must do
