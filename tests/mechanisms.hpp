@@ -276,6 +276,26 @@ template <class S> Fixture<S> disk_train(int n) {
   return f;
 }
 
+/// disk_train(n) whose last disk also drives a parallelogram four-bar: a coupler from the pin (0, 2) on disk n
+/// (revolute "A", variable psi) to the pin (0, 2) on a rocker (revolute "B", chi) turning about the ground
+/// point 4 to the right of disk n's pivot (revolute "O", theta). Redundant as the train: 4n + 3 equations,
+/// 3n + 3 unknowns. On the assembled (parallelogram) branch theta = phi_n; the crossed branch meets it where
+/// the pins lie on the pivots' line, phi_n = +-90 deg (change points). Assembled at phi = 0 (exact guess).
+template <class S> Fixture<S> gear_train_with_parallelogram(int n) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true);
+  const DiskTrain<S> t = add_disk_train(b, ground, n);
+  const int coupler = b.link("coupler"), rocker = b.link("rocker");
+  const Vec2<S> pin(S(0), S(2));
+  b.revolute("A", t.disk[static_cast<std::size_t>(n)], coupler, SE2<S>(S(0), pin), SE2<S>(), "psi");
+  b.revolute("B", coupler, rocker, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(S(0), pin), "chi");
+  b.revolute("O", ground, rocker, SE2<S>(S(0), Vec2<S>(t.centre.back() + Vec2<S>(S(4), S(0)))), SE2<S>(), "theta");
+  b.driver(t.pivot[0]);
+  Fixture<S> f{b.build(), VectorX<S>::Zero(3 * n + 4), {}};
+  disk_train_guess(b, t, f.guess);
+  return f;
+}
+
 /// Cam of stage k of cam_gear_train, scaled with disk k's radius r_k: R = r_k / 2, e = r_k / 5; stages
 /// k = 1, 4, 7, ... a roller of radius r_k / 4, k = 2, 5, ... a flat face, k = 3, 6, ... a flat face tilted
 /// by 15 deg.
