@@ -1,12 +1,14 @@
 // build/rollkin_bench_scaling: cost per pose against the number of loops N (issue 15, "Scale with the
 // mechanism"). Families of tests/mechanisms.hpp: disk_train(N) (N + 1 pivoted rolling disks, redundant
-// constraints) and four_bar_chain(N); N = 2 .. 256; factorisations Dense (SmallLU / COD), Eigen SparseLU and
+// constraints), four_bar_chain(N) and cam_gear_train(N) (the gear train with a cam and translating follower on
+// each driven disk: rolling, cam, revolute and prismatic pairs, 2N loops); N = 2 .. 256; factorisations Dense (SmallLU / COD), Eigen SparseLU and
 // KLU (solve/sparse_lu.hpp), and Automatic (what SolveData picks). Per case: us per pose (median over
 // repeats of a path of poses, each an Euler predictor from the previous pose's velocity and Newton),
-// Newton iterations per pose, one factorisation's time, the bytes of the solve data; then the exponent of
+// Newton iterations per pose, one factorisation's time, the bytes of the solve data, the assembly's time (once
+// per mechanism: it includes the sparse path's choice of independent rows); then the exponent of
 // cost against N fitted by least squares on log-log, and the issue's ratios. Not a test; see docs/benchmark.md.
 #include "measure.hpp"
-#include "mechanisms.hpp"  // tests/mechanisms.hpp: disk_train, four_bar_chain, paper_fourbar
+#include "mechanisms.hpp"  // tests/mechanisms.hpp: disk_train, four_bar_chain, cam_gear_train, paper_fourbar
 
 #include <CLI/CLI.hpp>
 
@@ -34,7 +36,7 @@ struct Family {
 };
 
 struct Result {
-  double us_per_pose = NAN, iterations = NAN, factor_us = NAN, bytes = NAN;
+  double us_per_pose = NAN, iterations = NAN, factor_us = NAN, bytes = NAN, assemble_ms = NAN;
 };
 
 const char* method_name(Factorisation f) {
@@ -51,11 +53,14 @@ const char* method_name(Factorisation f) {
 Result measure(const Fixture<double>& f, Factorisation how, int poses, double step, int repeats) {
   SolveData<double> sd(f.mech, how);
   VectorX<double> q0 = f.guess;
+  const auto t_assemble = Clock::now();
   if (!assemble(f.mech, q0, sd, f.held).ok()) return {};
+  const double assemble_ms = seconds_since(t_assemble) * 1e3;
   const int driver = f.mech.drivers[0];
   const VectorX<double> unit_rate = VectorX<double>::Ones(1);
   VectorX<double> q, rates;
   Result r;
+  r.assemble_ms = assemble_ms;
   std::vector<double> times;
   long iterations = 0;
   for (int rep = 0; rep < repeats; ++rep) {
@@ -108,11 +113,13 @@ int main(int argc, char** argv) {
   int repeats = 9, poses = 40, dense_max = 64;
   std::string csv;
   bool quick = false;
+  std::string only;
   app.add_option("--repeats", repeats, "timed paths per case (median)");
   app.add_option("--poses", poses, "poses per path");
   app.add_option("--dense-max", dense_max, "largest N for the dense factorisation (its cost grows as N^3)");
   app.add_option("--csv", csv, "write the table as CSV")->type_name("FILE");
   app.add_flag("--quick", quick, "N up to 32, 3 repeats");
+  app.add_option("--family", only, "only this family (gear_train, four_bar_chain, cam_gear_train)");
   CLI11_PARSE(app, argc, argv);
   if (quick) repeats = 3;
 
@@ -132,6 +139,7 @@ int main(int argc, char** argv) {
   const std::vector<Family> families = {
       {"gear_train", [](int n) { return testing::disk_train<double>(n); }, 0.5},
       {"four_bar_chain", [](int n) { return testing::four_bar_chain<double>(n); }, 0.1},
+      {"cam_gear_train", [](int n) { return testing::cam_gear_train<double>(n); }, 0.5},
   };
   const std::vector<Factorisation> methods = {Factorisation::Dense, Factorisation::EigenSparseLU, Factorisation::Klu,
                                               Factorisation::Automatic};
@@ -140,11 +148,12 @@ int main(int argc, char** argv) {
   std::ofstream out;
   if (!csv.empty()) {
     out.open(csv);
-    out << "family,N,unknowns,equations,method,us_per_pose,iterations_per_pose,factor_us,bytes\n";
+    out << "family,N,unknowns,equations,method,us_per_pose,iterations_per_pose,factor_us,bytes,assemble_ms\n";
   }
   for (const Family& fam : families) {
-    std::printf("\n%-15s %4s %5s %5s  %-15s %11s %8s %10s %10s\n", "family", "N", "unkn", "eqns", "factorisation",
-                "us/pose", "it/pose", "factor us", "bytes");
+    if (!only.empty() && fam.name != only) continue;
+    std::printf("\n%-15s %4s %5s %5s  %-15s %11s %8s %10s %10s %12s\n", "family", "N", "unkn", "eqns", "factorisation",
+                "us/pose", "it/pose", "factor us", "bytes", "assemble ms");
     std::map<Factorisation, std::vector<double>> cost;
     for (int n : sizes) {
       const Fixture<double> f = fam.make(n);
@@ -152,12 +161,13 @@ int main(int argc, char** argv) {
         Result r;
         if (how != Factorisation::Dense || n <= dense_max) r = measure(f, how, poses, fam.step_deg * kDeg, repeats);
         cost[how].push_back(r.us_per_pose);
-        std::printf("%-15s %4d %5zu %5d  %-15s %11.3f %8.2f %10.3f %10.0f\n", fam.name.c_str(), n, f.mech.unknowns.size(),
-                    f.mech.equation_count(), method_name(how), r.us_per_pose, r.iterations, r.factor_us, r.bytes);
+        std::printf("%-15s %4d %5zu %5d  %-15s %11.3f %8.2f %10.3f %10.0f %12.3f\n", fam.name.c_str(), n,
+                    f.mech.unknowns.size(), f.mech.equation_count(), method_name(how), r.us_per_pose, r.iterations,
+                    r.factor_us, r.bytes, r.assemble_ms);
         if (out)
           out << fam.name << ',' << n << ',' << f.mech.unknowns.size() << ',' << f.mech.equation_count() << ','
               << method_name(how) << ',' << r.us_per_pose << ',' << r.iterations << ',' << r.factor_us << ','
-              << r.bytes << '\n';
+              << r.bytes << ',' << r.assemble_ms << '\n';
       }
     }
     std::printf("fitted exponent of us/pose against N (least squares on log-log), %s:\n", fam.name.c_str());

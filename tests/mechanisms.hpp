@@ -150,42 +150,76 @@ template <class S> Fixture<S> driven_open_chain(const S& scale = S(1)) {
   return f;
 }
 
-/// Eccentric circular cam (radius R, centre e from the pivot at the origin along the cam's x-axis; input
-/// theta, the cam's angle) driving a follower that translates along the world y-axis through the pivot.
-/// The follower ends in a roller of radius r fixed to it (roller = true), or in a flat face through its
-/// origin tilted by beta from the perpendicular to the stroke. Variables: theta, s (follower height), u (cam
-/// circle), v (roller angle or position along the face). The guess is the exact pose at theta = 0.
-template <class S> Fixture<S> eccentric_cam(const S& R, const S& e, bool roller, const S& r, const S& beta = S(0)) {
+/// Eccentric circular cam (radius R, centre e from the pivot along the cam's x-axis) with a translating
+/// follower ending in a roller of radius r fixed to it (roller = true), or in a flat face through its origin
+/// tilted by beta from the perpendicular to the stroke.
+template <class S> struct CamFollowerDims {
+  S R, e;
+  bool roller;
+  S r, beta;
+};
+
+/// The pairs add_eccentric_cam() adds and the exact values of their variables when the cam's angle is 0.
+template <class S> struct CamFollower {
+  int guide, contact;  // prismatic (variable s), cam pair (variables u, v)
+  S s, u, v;
+};
+
+/// Adds to link `cam`, which turns on a revolute about the ground point `pivot` with its frame's origin
+/// there, an eccentric circular cam (contour "disk<tag>", CamFollowerDims) and a follower link
+/// ("follower<tag>") translating along the world y-axis through the pivot (prismatic "guide<tag>", variable s:
+/// the follower's height above the pivot), touching the cam through the cam pair "contact<tag>" (u on the cam
+/// circle, v the roller's angle or the position along the face).
+template <class S> CamFollower<S> add_eccentric_cam(MechanismBuilder<S>& b, int ground, int cam, const Vec2<S>& pivot,
+                                                    const CamFollowerDims<S>& d, const std::string& tag = "") {
   using std::atan2;
   using std::cos;
   using std::sin;
   using std::sqrt;
-  MechanismBuilder<S> b;
-  const int ground = b.link("ground", true), cam = b.link("cam"), follower = b.link("follower");
-  const int disk = b.contour(cam, "disk", Circle<S>(R), SE2<S>(S(0), Vec2<S>(e, S(0))));
+  const S& R = d.R;
+  const S& e = d.e;
+  const int follower = b.link("follower" + tag);
+  const int disk = b.contour(cam, "disk" + tag, Circle<S>(R), SE2<S>(S(0), Vec2<S>(e, S(0))));
   // The follower's frame has its x-axis along the stroke (world +y): a prismatic slides along x.
   const S quarter = pi<S>() / S(2);
   const S reach = S(4) * (R + e);
-  const int tip = roller ? b.contour(follower, "roller", Circle<S>(r))
-                         // In the follower's frame angle beta - 90 deg is the world direction beta; material on
-                         // the face's left, i.e. above it (the follower's side).
-                         : b.contour(follower, "face", Line<S>(-reach, reach), SE2<S>(S(beta - quarter), Vec2<S>(S(0), S(0))));
-  const int pivot = b.revolute("pivot", ground, cam, SE2<S>(), SE2<S>(), "theta");
-  b.prismatic("guide", ground, follower, SE2<S>(quarter, Vec2<S>(S(0), S(0))), SE2<S>(), "s");
-  b.contact("contact", false, disk, tip, "u", "v");
-  b.driver(pivot);
-  Fixture<S> f{b.build(), VectorX<S>(4), {}};
-  if (roller) {
-    const S y0 = sqrt((R + r) * (R + r) - e * e);  // roller centre (0, y0), cam centre (e, 0)
+  const int tip = d.roller ? b.contour(follower, "roller" + tag, Circle<S>(d.r))
+                           // In the follower's frame angle beta - 90 deg is the world direction beta; material on
+                           // the face's left, i.e. above it (the follower's side).
+                           : b.contour(follower, "face" + tag, Line<S>(-reach, reach),
+                                       SE2<S>(S(d.beta - quarter), Vec2<S>(S(0), S(0))));
+  CamFollower<S> c;
+  c.guide = b.prismatic("guide" + tag, ground, follower, SE2<S>(quarter, pivot), SE2<S>(), "s");
+  c.contact = b.contact("contact" + tag, false, disk, tip, "u", "v");
+  if (d.roller) {
+    const S y0 = sqrt((R + d.r) * (R + d.r) - e * e);  // roller centre (0, y0), cam centre (e, 0) from the pivot
     // Contact on the line of centres: cam point in direction (-e, y0); the roller's point in the opposite
     // direction, seen in the follower's frame (turned +90 deg): (-y0, -e).
-    f.guess << S(0), y0, atan2(y0, -e), atan2(-e, -y0);
+    c.s = y0;
+    c.u = atan2(y0, -e);
+    c.v = atan2(-e, -y0);
   } else {
-    const Vec2<S> n(-sin(beta), cos(beta));  // face normal (up), the cam's contact point is C + R n
+    const Vec2<S> n(-sin(d.beta), cos(d.beta));  // face normal (up), the cam's contact point is C + R n
     const Vec2<S> point = Vec2<S>(e, S(0)) + n * R;
-    const S along = point.x() / cos(beta);  // point = (0, s) + along (cos beta, sin beta)
-    f.guess << S(0), S(point.y() - along * sin(beta)), atan2(n.y(), n.x()), along;
+    const S along = point.x() / cos(d.beta);  // point = (0, s) + along (cos beta, sin beta)
+    c.s = point.y() - along * sin(d.beta);
+    c.u = atan2(n.y(), n.x());
+    c.v = along;
   }
+  return c;
+}
+
+/// Eccentric circular cam (add_eccentric_cam) turning about the origin; input theta, the cam's angle.
+/// Variables: theta, s (follower height), u (cam circle), v (roller angle or position along the face).
+/// The guess is the exact pose at theta = 0.
+template <class S> Fixture<S> eccentric_cam(const S& R, const S& e, bool roller, const S& r, const S& beta = S(0)) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true), cam = b.link("cam");
+  const int pivot = b.revolute("pivot", ground, cam, SE2<S>(), SE2<S>(), "theta");
+  const CamFollower<S> c = add_eccentric_cam<S>(b, ground, cam, Vec2<S>(S(0), S(0)), {R, e, roller, r, beta});
+  b.driver(pivot);
+  Fixture<S> f{b.build(), VectorX<S>(4), {}};
+  f.guess << S(0), c.s, c.u, c.v;
   return f;
 }
 
@@ -197,29 +231,102 @@ template <class S> S disk_train_radius(int k) {
   return S(pattern[k % 4]) / S(4);
 }
 
-/// Train of n + 1 disks (radii disk_train_radius), each on a revolute to the ground, pivots on the x-axis at
-/// the sum of neighbouring radii, neighbours rolling on each other: n loops, each closed through its own
-/// contact. Variables: phi_0 .. phi_n (phi_0 the input), then (u_k, v_k) of contact k (disk k, disk k+1).
+/// The disks of a gear train added to a builder: links, revolutes to the ground, pivots, rolling contacts.
+template <class S> struct DiskTrain {
+  std::vector<int> disk, pivot, mesh;
+  std::vector<Vec2<S>> centre;
+};
+
+/// Adds n + 1 disks (radii disk_train_radius, links "disk<k>"), each on a revolute "pivot<k>" (variable phi)
+/// to the ground, pivots on the x-axis at the sum of neighbouring radii, neighbours rolling on each other
+/// ("mesh<k>": disk k, disk k+1; u_k, v_k). The revolutes come first, then the contacts.
+template <class S> DiskTrain<S> add_disk_train(MechanismBuilder<S>& b, int ground, int n) {
+  DiskTrain<S> t;
+  std::vector<int> rim;
+  S x(0);
+  for (int k = 0; k <= n; ++k) {
+    t.disk.push_back(b.link("disk" + std::to_string(k)));
+    if (k > 0) x += disk_train_radius<S>(k - 1) + disk_train_radius<S>(k);
+    t.centre.emplace_back(x, S(0));
+    rim.push_back(b.contour(t.disk.back(), "rim", Circle<S>(disk_train_radius<S>(k))));
+    t.pivot.push_back(b.revolute("pivot" + std::to_string(k), ground, t.disk.back(), SE2<S>(S(0), t.centre.back()),
+                                 SE2<S>(), "phi"));
+  }
+  for (int k = 0; k < n; ++k) t.mesh.push_back(b.contact("mesh" + std::to_string(k), true, rim[k], rim[k + 1], "u", "v"));
+  return t;
+}
+
+/// Assembly guess of a disk train at phi = 0: contact k on the x-axis (u_k = 0, v_k = pi); exact.
+template <class S> void disk_train_guess(const MechanismBuilder<S>& b, const DiskTrain<S>& t, VectorX<S>& guess) {
+  for (int mesh : t.mesh) guess(b.variable(mesh, 1)) = pi<S>();
+}
+
+/// Train of n + 1 disks (add_disk_train): n loops, each closed through its own contact. Variables:
+/// phi_0 .. phi_n (phi_0 the input), then (u_k, v_k) of contact k (disk k, disk k+1).
 /// Rolling without slip: r_k dphi_k = -r_k+1 dphi_k+1, so phi_k = (-1)^k (r_0 / r_k) phi_0. Overconstrained:
 /// each loop's centre distance row repeats what the pivots fix (4n equations, 3n unknowns, rank 3n).
 /// Assembled at phi = 0 with contact k on the x-axis (u_k = 0, v_k = pi): the guess is exact.
 template <class S> Fixture<S> disk_train(int n) {
   MechanismBuilder<S> b;
   const int ground = b.link("ground", true);
-  std::vector<int> rim, pivot;
-  S x(0);
-  for (int k = 0; k <= n; ++k) {
-    const std::string name = "disk" + std::to_string(k);
-    const int disk = b.link(name);
-    if (k > 0) x += disk_train_radius<S>(k - 1) + disk_train_radius<S>(k);
-    rim.push_back(b.contour(disk, "rim", Circle<S>(disk_train_radius<S>(k))));
-    pivot.push_back(b.revolute("pivot" + std::to_string(k), ground, disk, SE2<S>(S(0), Vec2<S>(x, S(0))), SE2<S>(),
-                               "phi"));
-  }
-  for (int k = 0; k < n; ++k) b.contact("mesh" + std::to_string(k), true, rim[k], rim[k + 1], "u", "v");
-  b.driver(pivot[0]);
+  const DiskTrain<S> t = add_disk_train(b, ground, n);
+  b.driver(t.pivot[0]);
   Fixture<S> f{b.build(), VectorX<S>::Zero(3 * n + 1), {}};
-  for (int k = 0; k < n; ++k) f.guess(n + 1 + 2 * k + 1) = pi<S>();
+  disk_train_guess(b, t, f.guess);
+  return f;
+}
+
+/// disk_train(n) whose last disk also drives a parallelogram four-bar: a coupler from the pin (0, 2) on disk n
+/// (revolute "A", variable psi) to the pin (0, 2) on a rocker (revolute "B", chi) turning about the ground
+/// point 4 to the right of disk n's pivot (revolute "O", theta). Redundant as the train: 4n + 3 equations,
+/// 3n + 3 unknowns. On the assembled (parallelogram) branch theta = phi_n; the crossed branch meets it where
+/// the pins lie on the pivots' line, phi_n = +-90 deg (change points). Assembled at phi = 0 (exact guess).
+template <class S> Fixture<S> gear_train_with_parallelogram(int n) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true);
+  const DiskTrain<S> t = add_disk_train(b, ground, n);
+  const int coupler = b.link("coupler"), rocker = b.link("rocker");
+  const Vec2<S> pin(S(0), S(2));
+  b.revolute("A", t.disk[static_cast<std::size_t>(n)], coupler, SE2<S>(S(0), pin), SE2<S>(), "psi");
+  b.revolute("B", coupler, rocker, SE2<S>(S(0), Vec2<S>(S(4), S(0))), SE2<S>(S(0), pin), "chi");
+  b.revolute("O", ground, rocker, SE2<S>(S(0), Vec2<S>(t.centre.back() + Vec2<S>(S(4), S(0)))), SE2<S>(), "theta");
+  b.driver(t.pivot[0]);
+  Fixture<S> f{b.build(), VectorX<S>::Zero(3 * n + 4), {}};
+  disk_train_guess(b, t, f.guess);
+  return f;
+}
+
+/// Cam of stage k of cam_gear_train, scaled with disk k's radius r_k: R = r_k / 2, e = r_k / 5; stages
+/// k = 1, 4, 7, ... a roller of radius r_k / 4, k = 2, 5, ... a flat face, k = 3, 6, ... a flat face tilted
+/// by 15 deg.
+template <class S> CamFollowerDims<S> cam_gear_train_cam(int k) {
+  const S rk = disk_train_radius<S>(k);
+  const int kind = k % 3;
+  return {rk / S(2), rk / S(5), kind == 1, rk / S(4), kind == 0 ? S(pi<S>() / S(12)) : S(0)};
+}
+
+/// Mixed cam and gear mechanism of n stages: the gear train of disk_train(n) (disk 0 the input) where each
+/// driven disk k = 1 .. n also carries an eccentric circular cam (cam_gear_train_cam(k), add_eccentric_cam
+/// with tag k) driving a follower that translates along the vertical through disk k's pivot. Rolling pairs,
+/// cam pairs, revolutes and prismatics; 2n loops, 7n equations, 6n unknowns, rank 6n (n redundant rows,
+/// the gear train's). Variables: those of disk_train(n), then (s, u, v) of each stage's follower.
+/// Closed forms: phi_k = (-1)^k (r_0 / r_k) phi_0; s_k = e sin phi_k + sqrt((R + r)^2 - e^2 cos^2 phi_k)
+/// (roller) or (e sin(phi_k - beta) + R) / cos beta (flat face). Assembled at phi = 0 (exact guess).
+template <class S> Fixture<S> cam_gear_train(int n) {
+  MechanismBuilder<S> b;
+  const int ground = b.link("ground", true);
+  const DiskTrain<S> t = add_disk_train(b, ground, n);
+  std::vector<CamFollower<S>> cams;
+  for (int k = 1; k <= n; ++k)
+    cams.push_back(add_eccentric_cam(b, ground, t.disk[k], t.centre[k], cam_gear_train_cam<S>(k), std::to_string(k)));
+  b.driver(t.pivot[0]);
+  Fixture<S> f{b.build(), VectorX<S>::Zero(6 * n + 1), {}};
+  disk_train_guess(b, t, f.guess);
+  for (const CamFollower<S>& c : cams) {
+    f.guess(b.variable(c.guide)) = c.s;
+    f.guess(b.variable(c.contact, 0)) = c.u;
+    f.guess(b.variable(c.contact, 1)) = c.v;
+  }
   return f;
 }
 
@@ -234,12 +341,26 @@ template <class S> ChainBar<S> four_bar_chain_bar(int k) {
   return {a, c, d, sqrt(d * d + (c - a) * (c - a))};
 }
 
+/// Bar k of change_point_chain: bar 0 a parallelogram (pin radii 2, pivot spacing and coupler 4: a Grashof
+/// change-point linkage, whose parallelogram and crossed branches meet where the pins lie on the pivots' line,
+/// at rocker angles +-90 deg), the others crank-rockers (input pin radius 1.5, output 2: the input turns fully,
+/// transmission angle between 30 and 128 deg, so no bar after the first has a singular pose).
+template <class S> ChainBar<S> change_point_chain_bar(int k) {
+  using std::sqrt;
+  const S d(4);
+  if (k == 0) return {S(2), S(2), d, d};
+  const S a = S(3) / S(2), c(2);
+  return {a, c, d, sqrt(d * d + (c - a) * (c - a))};
+}
+
 /// Chain of n four-bars: n + 1 rockers turning about ground pivots (4 apart on the x-axis), rocker k joined
 /// to rocker k + 1 by coupler k (pins at radius a on rocker k and c on rocker k + 1, both straight up, i.e.
 /// at (0, a) and (0, c) in the rockers' frames; four_bar_chain_bar). n loops, 3n equations, 3n unknowns.
 /// Variables: theta_0 .. theta_n (theta_0 the input), then per coupler (psi_k, chi_k): the coupler's angle on
-/// rocker k and rocker k+1's on the coupler. Assembled at theta = 0 (exact guess).
-template <class S> Fixture<S> four_bar_chain(int n) {
+/// rocker k and rocker k+1's on the coupler. Assembled at theta = 0 (exact guess). `bar_of` gives the
+/// dimensions (four_bar_chain_bar; change_point_chain_bar for a chain that passes singular poses); the pivots
+/// are 4 apart whatever it says.
+template <class S> Fixture<S> four_bar_chain(int n, ChainBar<S> (*bar_of)(int) = four_bar_chain_bar<S>) {
   using std::atan2;
   MechanismBuilder<S> b;
   const int ground = b.link("ground", true);
@@ -251,7 +372,7 @@ template <class S> Fixture<S> four_bar_chain(int n) {
   }
   std::vector<S> alpha;  // couplers' angles at rest
   for (int k = 0; k < n; ++k) {
-    const ChainBar<S> bar = four_bar_chain_bar<S>(k);
+    const ChainBar<S> bar = bar_of(k);
     const int coupler = b.link("coupler" + std::to_string(k));
     b.revolute("A" + std::to_string(k), rocker[k], coupler, SE2<S>(S(0), Vec2<S>(S(0), bar.a)), SE2<S>(), "psi");
     b.revolute("B" + std::to_string(k), coupler, rocker[k + 1], SE2<S>(S(0), Vec2<S>(bar.coupler, S(0))),

@@ -166,3 +166,38 @@ BOOST_AUTO_TEST_CASE(determinant_sign_follows_row_swaps_and_pivots) {
   BOOST_TEST_REQUIRE(lu.compute(m));
   BOOST_TEST(lu.determinant_sign() == 1);
 }
+
+BOOST_AUTO_TEST_CASE(redundant_mechanism_passes_a_change_point_landed_on_exactly) {
+  // Two rolling disks (radii 1 and 1.5: phi_1 = -phi_0 / 1.5; the centre distance row is redundant, 7 equations
+  // and 6 unknowns) whose second disk drives a parallelogram (tests/mechanisms.hpp,
+  // gear_train_with_parallelogram): on its branch the rocker turns with disk 1, theta = phi_1, and at
+  // phi_1 = -90 deg (phi_0 = 135 deg, a grid value) the crossed branch meets it. A change point is no motion
+  // limit: the sweep must go on past it on the same branch, as it does for the square anti-parallelogram.
+  const auto f = gear_train_with_parallelogram<double>(1);
+  SolveReport<double> rep;
+  const auto res = assemble_and_sweep(f, grid_degrees(0, 360, 1), &rep);
+  BOOST_TEST_REQUIRE(rep.ok());
+  BOOST_TEST_REQUIRE(rep.redundant() == 1);
+  BOOST_TEST(res.limits.empty(), (res.limits.empty() ? "" : res.limits[0].detail));
+  const int rocker = f.mech.find_variable("O.theta");
+  BOOST_TEST_REQUIRE(rocker >= 0);
+  int singular = 0, off_branch = 0, missing = 0;
+  for (const auto& p : res.poses) {
+    if (!p.report.has_pose()) {
+      ++missing;
+      continue;
+    }
+    const double phi1 = -p.input / 1.5;
+    const double error_deg =
+        std::max(std::abs(wrap_angle(p.q(1) - phi1)), std::abs(wrap_angle(p.q(rocker) - phi1))) / kDeg;
+    if (p.report.status == SolveStatus::Singular) {
+      ++singular;
+      if (std::abs(p.input / kDeg - 135) > 1e-9 || !(error_deg < 1e-6)) ++off_branch;
+    } else if (!p.report.ok() || !(error_deg < 1e-9)) {
+      ++off_branch;
+    }
+  }
+  BOOST_TEST(missing == 0, missing << " of " << res.poses.size() << " poses not reached");
+  BOOST_TEST(off_branch == 0);
+  BOOST_TEST(singular <= 1);
+}
