@@ -1,6 +1,7 @@
 // The dense path's factorisation of redundant systems (solve/position.hpp, SolveData::factor): more rows than
-// unknowns are solved by the LU of independent rows, chosen once by a rank-revealing QR and again where they
-// fail or their pivot ratio grows 16-fold; a rank-deficient system by the COD. The Jacobian is set by hand on
+// unknowns are solved by the LU of independent rows, chosen once by a rank-revealing QR and again where their
+// pivot ratio grows 16-fold (at that pose) or their LU fails while the system keeps rank n (the COD takes that
+// pose, new rows the next); a rank-deficient system by the COD. The Jacobian is set by hand on
 // a real mechanism's solve data (disk_train(2): 8 rows, 6 unknowns) so that every case is known exactly: the
 // solve of a consistent system must return the x it was built from.
 #define BOOST_TEST_MODULE solve_position
@@ -92,6 +93,11 @@ BOOST_AUTO_TEST_CASE(rows_that_become_dependent_are_chosen_again) {
   for (Eigen::Index c = 0; c < 6; ++c) b(6, c) = u(rng);
   Eigen::ColPivHouseholderQR<MatrixX<double>> full(b);
   BOOST_TEST_REQUIRE(full.rank() == 6);
+  // This pose: the chosen rows' LU is singular, so the COD solves it (rank 6, exactly) and asks for new rows.
+  BOOST_TEST(h.solve_error(b, x) < 1e-12);
+  BOOST_TEST(!h.sd.lu_active);
+  BOOST_TEST(h.sd.rank == 6);
+  // The next pose: new independent rows, an LU again.
   BOOST_TEST(h.solve_error(b, x) < 1e-12);
   BOOST_TEST(h.sd.lu_active);
   BOOST_TEST(h.sd.rank == 6);

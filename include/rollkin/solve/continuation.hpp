@@ -250,14 +250,17 @@ template <class S> class Tracer {
   }
 
   /// A converged trial whose values are not accurate: the Jacobian of the unknowns is rank deficient, or its
-  /// condition times the residual (a bound on the error of the unknowns) exceeds eps^(2/3).
+  /// condition times the residual of the square system it factors (a bound on the error of the unknowns)
+  /// exceeds eps^(2/3). With redundant constraints that is the residual of the independent rows the LU takes
+  /// (SolveData::square_residual), not of all rows: those keep the least-squares floor of their disagreement
+  /// (sampled contours). It is taken as at least eps, the round-off of evaluating it: the few rows an LU
+  /// solves can come out exactly zero at a change point, where the unknowns are anything but exact. A pose no
+  /// LU could take (the COD) is singular.
   bool singular_trial(const SolveReport<S>& rep) const {
+    using std::max;
     if (rep.status == SolveStatus::Underdetermined) return start_.ok();
-    // condition x residual bounds the error of a square system only: with redundant constraints the residual
-    // keeps the least-squares floor of their disagreement (sampled contours), and a rank loss is reported as
-    // Underdetermined above.
-    if (rep.equations != rep.unknowns) return false;
-    return rep.ok() && rep.condition * rep.residual > tolerance<S>(S(2) / S(3));
+    const S residual = rep.equations == rep.unknowns ? rep.residual : max(sd_.square_residual(), epsilon<S>());
+    return rep.ok() && rep.condition * residual > tolerance<S>(S(2) / S(3));
   }
 
   /// From the current (regular) pose, steps over the singular input t to a regular pose beyond it, at least

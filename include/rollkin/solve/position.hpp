@@ -44,7 +44,7 @@ using SparseFactors = std::conditional_t<sparse_factorisation_available<S>, Spar
 /// minimum-norm least-squares step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp) factors the independent
 /// rows, found once, by a sparse LU whose symbolic analysis is done once; a pose where that LU is singular
 /// or ill-conditioned takes the dense decomposition instead (same statuses, rank and condition as the dense
-/// path) and the independent rows are chosen again at the next pose.
+/// path), and the independent rows are chosen again at the next pose if the system had rank n there.
 template <class S> struct SolveData {
   Factorisation method;                  // Dense, EigenSparseLU or Klu (Automatic resolved)
   KinematicsData<S> kin;
@@ -143,6 +143,10 @@ template <class S> struct SolveData {
     rank = static_cast<int>(cod.rank());
     condition = rank < n || rank == 0 ? std::numeric_limits<S>::infinity()
                                       : S(abs(cod.matrixQTZ()(0, 0)) / abs(cod.matrixQTZ()(n - 1, n - 1)));
+    // The system has rank n here although the LU of the chosen independent rows failed: they were a poor
+    // choice, so choose again at the next pose. Where the system itself is singular (a change point) the
+    // rows are kept, and with them the meaning of the determinant's sign the continuation tracks.
+    if (rank == n) selected_for_rows_ = selected_dense_for_ = -1;
   }
   /// x = J^-1 b (LU; of the independent rows of a redundant system) or the minimum-norm least-squares
   /// solution (COD), in the scaled variables.
@@ -160,10 +164,32 @@ template <class S> struct SolveData {
   /// (unknown). The column and row scales are positive, so it is the sign of det J_u itself (with redundant
   /// constraints, of the independent rows the sparse path factors).
   int determinant_sign() const {
-    if (lu_active) return lu.determinant_sign();
+    if (lu_active) return lu.determinant_sign() * (lu_on_selected_rows_ ? selected_sign_offset_ : 1);
     if constexpr (sparse_factorisation_available<S>)
       if (sparse_active) return sparse_lu.determinant_sign();
     return 0;
+  }
+
+  /// The scaled residual (max-norm) of the square system the active LU factors: all rows of a square
+  /// system, the independent rows of a redundant one (dense or sparse). Its condition times this bounds the
+  /// error of the unknowns, which the least-squares floor of redundant rows that disagree (sampled contours)
+  /// would blur. Infinite when no LU is active (the COD: rank-deficient or singular here).
+  S square_residual() const {
+    using std::abs;
+    using std::max;
+    S worst(0);
+    const auto row = [&](Eigen::Index r) { worst = max(worst, S(abs(kin.residual(r)) * row_weight(r))); };
+    if (lu_on_selected_rows_) {
+      for (Eigen::Index r : selected_rows_) row(r);
+    } else if (lu_active) {
+      for (Eigen::Index r = 0; r < static_cast<Eigen::Index>(unknowns.size()); ++r) row(r);
+    } else if constexpr (sparse_factorisation_available<S>) {
+      if (!sparse_active) return std::numeric_limits<S>::infinity();
+      for (int r : sparse_lu.selected_rows()) row(r);
+    } else {
+      return std::numeric_limits<S>::infinity();
+    }
+    return worst;
   }
 
   /// Bytes of the solve buffers and factors (the mechanism itself not counted).
@@ -186,6 +212,8 @@ template <class S> struct SolveData {
   std::vector<Eigen::Index> selected_rows_;
   int selected_dense_for_ = -1;
   S selected_condition_ = S(0);
+  int selected_sign_offset_ = 1;      // relates the sign of det of the rows chosen now to the first choice's
+  std::vector<Eigen::Index> kept_rows_;  // the previous choice, while a new one is tried
   VectorX<S> selected_rhs_;
   bool lu_on_selected_rows_ = false;  // the active LU is that of selected_rows_
 
@@ -202,27 +230,45 @@ template <class S> struct SolveData {
   }
 
   /// A dense system with more rows than unknowns (redundant constraints): the LU of n independent rows among
-  /// the first `rows`. They are chosen by a column-pivoted QR of the transposed Jacobian (its first n pivots)
-  /// at the first pose, and again only where their LU becomes singular or its pivot ratio grows 16-fold over
-  /// the one it had when they were chosen (rows that were independent may become a poor choice along the
-  /// motion while others stay well conditioned). False when the COD must do this pose (rank below n), as on
-  /// the sparse path.
+  /// the first `rows`, chosen by a column-pivoted QR of the transposed Jacobian (its first n pivots) at the
+  /// first pose. Where their pivot ratio has grown 16-fold since they were chosen (rows that were independent
+  /// may become a poor choice while others stay well conditioned), rows are chosen again and kept if they do
+  /// better; the sign of det of the new rows is related to the old ones' at this pose, where both are
+  /// regular, so determinant_sign() keeps its meaning for the continuation. Where their LU is singular, false:
+  /// the COD takes the pose (and factor() asks for new rows if the system has rank n there).
   bool factor_selected_rows(int rows) {
     const auto n = static_cast<Eigen::Index>(unknowns.size());
     if (rows < n) return false;
-    const bool chosen_here = selected_dense_for_ != rows;
-    if (chosen_here && !choose_selected_rows(rows)) return false;
-    const bool regular = accept_lu(lu.compute([this](Eigen::Index r, Eigen::Index c) {
-      return scaled_jacobian(selected_rows_[static_cast<std::size_t>(r)], c);
-    }));
-    if (regular && chosen_here) selected_condition_ = condition;
-    if (regular && (chosen_here || !(condition > S(16) * selected_condition_))) {
-      lu_on_selected_rows_ = true;
+    if (selected_dense_for_ != rows) {
+      if (choose_selected_rows(rows) && lu_of_selected_rows()) {
+        selected_condition_ = condition;
+        return true;
+      }
+      selected_dense_for_ = -1;
+      return false;
+    }
+    if (!lu_of_selected_rows()) return false;
+    if (!(condition > S(16) * selected_condition_)) return true;
+    const int old_sign = lu.determinant_sign();
+    const S old_condition = condition;
+    kept_rows_ = selected_rows_;
+    if (choose_selected_rows(rows) && lu_of_selected_rows() && condition < old_condition) {
+      selected_sign_offset_ *= old_sign * lu.determinant_sign();
+      selected_condition_ = condition;
       return true;
     }
-    selected_dense_for_ = -1;  // choose again, here
-    lu_active = false;
-    return !chosen_here && factor_selected_rows(rows);
+    selected_rows_.swap(kept_rows_);  // no better rows here: the old ones, factored again
+    selected_dense_for_ = rows;
+    selected_condition_ = old_condition;  // not asked again before a further 16-fold growth
+    return lu_of_selected_rows();
+  }
+
+  /// The LU of the selected rows; true (and active) if regular.
+  bool lu_of_selected_rows() {
+    lu_on_selected_rows_ = accept_lu(lu.compute([this](Eigen::Index r, Eigen::Index c) {
+      return scaled_jacobian(selected_rows_[static_cast<std::size_t>(r)], c);
+    }));
+    return lu_on_selected_rows_;
   }
 
   /// The first n column pivots of the column-pivoted QR of the transposed scaled Jacobian (first `rows`
@@ -258,13 +304,14 @@ template <class S> struct SolveData {
     }
     const bool ok = sparse_lu.factor(kin.jacobian_values);
     const double largest = sparse_lu.largest_pivot(), smallest = sparse_lu.smallest_pivot();
-    if (!ok || !(smallest > largest * epsilon<S>() * S(n))) {
-      selected_for_rows_ = -1;  // singular here: choose the independent rows again at the next pose
-      return false;
+    const double singular_condition = 1 / (epsilon<double>() * n);
+    const double estimate = ok ? std::max(largest / smallest, sparse_lu.condition_estimate()) : 0.0;
+    if (!ok || !(estimate < singular_condition)) {
+      return false;  // singular here: the COD takes this pose (factor() chooses the rows again if it has rank n)
     }
     sparse_active = true;
     rank = n;
-    condition = largest / smallest;
+    condition = estimate;
     return true;
   }
 
