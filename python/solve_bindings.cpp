@@ -1,0 +1,413 @@
+// Solving in the Python module: Scene.solve, write, centrodes, reference and solve_many, each sweep solved on
+// worker threads with the GIL released.
+//
+// Threads: every solve, one scene or many, runs on worker threads; the calling thread waits with the GIL
+// released and, every kPollInterval, takes the GIL to run Python's signal handlers (PyErr_CheckSignals). A
+// Ctrl-C there raises the cancellation flag that sweep() polls between poses (ContinuationSettings::cancel),
+// the workers are joined and KeyboardInterrupt propagates.
+//
+// Files (Scene.write, Scene.centrodes(dxf=)) go through io::OutputSet like the CLI's: every path is checked
+// before solving, an output that is one of the scene's input files is refused, and all are written or none.
+#include "bindings.hpp"
+
+#include "animation.hpp"     // the CLI's writers (src/cli, library rollkin_outputs): plots, drawing, animation
+#include "output.hpp"
+
+#include "rollkin/centrodes.hpp"
+#include "rollkin/io/input_error.hpp"
+#include "rollkin/io/output_set.hpp"
+#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/solve/batch.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace rollkin::python {
+namespace {
+
+constexpr std::chrono::milliseconds kPollInterval{50};  // how often a waiting solve checks for Ctrl-C
+
+// ---- solving ---------------------------------------------------------------------------------------------
+
+/// What to solve: the sweep's overrides (None: the scene's own "sweep") and the extra columns.
+struct Request {
+  std::optional<double> start, stop, step;
+  bool analysis = false, rates = false;
+  double max_steps = 1e7;
+};
+
+/// One scene to solve and, once solved, its table (and, for writing files from it, its sweep result).
+struct Job {
+  std::shared_ptr<const rollkin::io::Scene> scene;
+  rollkin::io::Sweep sweep;
+  std::vector<double> inputs;  // internal units
+  rollkin::SolveReport<double> assembly;
+  rollkin::io::SweepTable table;
+  std::exception_ptr error;
+  bool keep_result = false;    // keep `result` and `analysis` (Scene.write, Scene.centrodes)
+  std::optional<rollkin::SweepResult<double>> result;
+  rollkin::io::SweepAnalysis analysis;
+  std::vector<double> values;  // the inputs in file units (the table's input column)
+};
+
+/// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise).
+Job prepare(const PyScene& s, const Request& r) {
+  const rollkin::io::Scene& scene = *s.scene;
+  Job job;
+  job.scene = s.scene;
+  const std::optional<rollkin::io::Sweep> requested = rollkin::io::requested_sweep(scene, r.start, r.stop, r.step);
+  if (!requested) throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
+  rollkin::io::Sweep& sw = job.sweep;
+  sw = *requested;
+  const std::string bad = rollkin::io::check_sweep(sw);
+  if (!bad.empty()) throw py::value_error("start/stop/step: " + bad);
+  job.inputs = rollkin::io::sweep_inputs(sw);
+  const double estimate = rollkin::estimate_substeps(scene.mechanism, scene.guess, sw.driver, job.inputs);
+  if (estimate > r.max_steps) {
+    std::ostringstream os;
+    os << scene.file << ": the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
+       << estimate << " continuation sub-steps, above max_steps = " << r.max_steps
+       << "; ask for a smaller range, a larger step, or raise max_steps";
+    throw py::value_error(os.str());
+  }
+  return job;
+}
+
+/// What the CLI's writers take: the solved sweep of a job (job.result set).
+rollkin::io::SweepOutput output_of(const Job& job, const Request& r) {
+  return {*job.scene, job.sweep, *job.result, job.values, r.analysis ? &job.analysis : nullptr};
+}
+
+/// Assembles and sweeps one scene (on a worker thread: no Python here). Exceptions are kept in job.error.
+void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
+  try {
+    const rollkin::io::Scene& scene = *job.scene;
+    const rollkin::Mechanism<double>& m = scene.mechanism;
+    rollkin::SolveData<double> sd(m);
+    rollkin::VectorX<double> q = scene.guess;
+    job.assembly = rollkin::assemble(m, q, sd, scene.held);
+    rollkin::ContinuationSettings<double> cfg;
+    cfg.cancel = &cancel;
+    job.result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
+    if (cancel) return;
+    job.values = rollkin::io::sweep_values(job.sweep);
+    if (r.analysis) job.analysis = rollkin::io::analyse_sweep(m, *job.result);
+    job.table = rollkin::io::sweep_table(output_of(job, r), r.rates);
+    if (!job.keep_result) job.result.reset();
+  } catch (...) {
+    job.error = std::current_exception();
+  }
+}
+
+/// Solves every job on up to `threads` worker threads (0: one per core; rollkin::run_batch) with the GIL
+/// released, the calling thread checking for Ctrl-C every kPollInterval. A signal handler's exception
+/// (KeyboardInterrupt) cancels the workers (between poses), waits for them and propagates.
+void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
+  if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core), got " + std::to_string(threads));
+  bool interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    rollkin::run_batch(
+        jobs.size(), threads, [&](std::size_t k, const std::atomic<bool>& cancel) { run(jobs[k], r, cancel); },
+        [&] {
+          py::gil_scoped_acquire gil;
+          interrupted = PyErr_CheckSignals() != 0;
+          return interrupted;
+        },
+        kPollInterval);
+  }
+  if (interrupted) throw py::error_already_set();
+}
+
+/// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
+/// assembled also "error": the InputError message Scene.solve would raise for it.
+py::dict to_dict(const Job& job) {
+  const rollkin::io::SweepTable& t = job.table;
+  py::dict out;
+  for (std::size_t c = 0; c < t.names.size(); ++c) {
+    py::array_t<double> a(static_cast<py::ssize_t>(t.rows()));
+    if (t.rows()) std::memcpy(a.mutable_data(), t.columns[c].data(), t.rows() * sizeof(double));
+    out[py::str(t.names[c])] = std::move(a);
+  }
+  out[py::str(t.status_name)] = str_array(t.status);
+  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
+    out["error"] = rollkin::io::assembly_error(*job.scene, job.assembly.detail).what();
+  return out;
+}
+
+/// Solves one scene on a worker thread; an assembly that fails is an InputError, as in the CLI.
+Job solved(const PyScene& s, const Request& r, bool keep_result) {
+  std::vector<Job> jobs{prepare(s, r)};
+  jobs[0].keep_result = keep_result;
+  run_all(jobs, r, 1);
+  if (jobs[0].error) std::rethrow_exception(jobs[0].error);
+  if (jobs[0].assembly.status == rollkin::SolveStatus::CannotAssemble)
+    throw rollkin::io::assembly_error(*s.scene, jobs[0].assembly.detail);
+  return std::move(jobs[0]);
+}
+
+py::dict solve(const PyScene& s, const Request& r) { return to_dict(solved(s, r, false)); }
+
+// ---- files -----------------------------------------------------------------------------------------------
+
+/// The files a scene read (never written over) as an OutputSet's inputs.
+rollkin::io::OutputSet output_set(const PyScene& s) {
+  std::vector<std::string> inputs;
+  if (!s.source.empty()) inputs.push_back(s.source);
+  inputs.insert(inputs.end(), s.scene->files_read.begin(), s.scene->files_read.end());
+  return rollkin::io::OutputSet(std::move(inputs));
+}
+
+/// An output file requested by keyword: its label in messages, its path (None: not written) and its text.
+struct FileRequest {
+  const char* label;
+  py::object path;
+  std::function<std::string(const rollkin::io::SweepOutput&)> text;
+};
+
+/// Checks every requested path (before solving), solves, and writes every file or none.
+py::dict write(const PyScene& s, const Request& r, const std::vector<FileRequest>& files) {
+  rollkin::io::OutputSet outputs = output_set(s);
+  std::vector<std::pair<std::size_t, const FileRequest*>> given;
+  for (const FileRequest& f : files)
+    if (!f.path.is_none()) given.emplace_back(outputs.add(f.label, path_text(f.path)), &f);
+  const Job job = solved(s, r, true);
+  const rollkin::io::SweepOutput out = output_of(job, r);
+  for (const auto& [index, f] : given) outputs.set(index, f->text(out));
+  outputs.commit();
+  return to_dict(job);
+}
+
+// ---- centrodes and the MPFR reference ----------------------------------------------------------------------
+
+int link_named(const rollkin::io::Scene& scene, const std::string& name) {
+  const int i = scene.mechanism.find_link(name);
+  if (i >= 0) return i;
+  std::string names;
+  for (const rollkin::Link& l : scene.mechanism.links) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+  throw py::value_error("no link \"" + name + "\" in " + scene.file + "; its links are " + names);
+}
+
+/// The instant centres of link b relative to link a over the sweep, as arrays (centrodes.hpp), optionally
+/// also written as DXF splines (the CLI's `centrodes --dxf`).
+py::dict centrodes(const PyScene& s, const std::string& link_a, const std::string& link_b, const Request& r,
+                   const py::object& dxf) {
+  const int a = link_named(*s.scene, link_a), b = link_named(*s.scene, link_b);
+  if (a == b) throw py::value_error("centrodes(): give two different links, got \"" + link_a + "\" twice");
+  rollkin::io::OutputSet outputs = output_set(s);
+  const std::optional<std::size_t> dxf_index =
+      dxf.is_none() ? std::nullopt : std::optional<std::size_t>(outputs.add("dxf", path_text(dxf)));
+  const Job job = solved(s, r, true);
+  const rollkin::Mechanism<double>& m = s.scene->mechanism;
+  rollkin::KinematicsData<double> kin(m);
+  const auto centres = rollkin::centrodes(m, kin, *job.result, a, b);
+  if (dxf_index) {
+    outputs.set(*dxf_index, rollkin::cli::centrode_dxf(output_of(job, r), centres, a, b));
+    outputs.commit();
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(centres.size());
+  py::array_t<double> input(n), ax(n), ay(n), bx(n), by(n), wx(n), wy(n);
+  py::array_t<bool> finite(n);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const auto& c = centres[static_cast<std::size_t>(k)];
+    input.mutable_at(k) = job.values[static_cast<std::size_t>(k)];
+    finite.mutable_at(k) = c.finite;
+    ax.mutable_at(k) = c.finite ? c.in_a.x() : nan;
+    ay.mutable_at(k) = c.finite ? c.in_a.y() : nan;
+    bx.mutable_at(k) = c.finite ? c.in_b.x() : nan;
+    by.mutable_at(k) = c.finite ? c.in_b.y() : nan;
+    wx.mutable_at(k) = c.finite ? c.world.x() : nan;
+    wy.mutable_at(k) = c.finite ? c.world.y() : nan;
+  }
+  py::dict out;
+  out[py::str(job.table.names.front())] = input;
+  out["a"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(ax, ay));
+  out["b"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(bx, by));
+  out["world"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(wx, wy));
+  out["finite"] = finite;
+  out[py::str(job.table.status_name)] = to_dict(job)[py::str(job.table.status_name)];
+  return out;
+}
+
+/// The sweep solved in MPFR (io::scene_reference) as float64 arrays: the columns of `rollkin reference --csv`
+/// (display units), each value the decimal result correctly rounded to the nearest double.
+py::dict reference(const PyScene& s, const Request& r, int digits) {
+  if (digits != 30 && digits != 50 && digits != 100)
+    throw py::value_error("reference(): digits must be 30, 50 or 100, got " + std::to_string(digits));
+  const Job job = prepare(s, r);
+  rollkin::ReferenceSweep ref;
+  {
+    py::gil_scoped_release nogil;
+    ref = rollkin::io::scene_reference(*s.scene, job.sweep, digits);
+  }
+  if (ref.assembly_status == rollkin::SolveStatus::CannotAssemble)
+    throw rollkin::io::assembly_error(*s.scene, ref.assembly_detail);
+  const rollkin::Mechanism<double>& m = s.scene->mechanism;
+  const int input = m.drivers[static_cast<std::size_t>(job.sweep.driver)];
+  const py::ssize_t n = static_cast<py::ssize_t>(ref.poses.size());
+  auto column = [&](auto field) {
+    py::array_t<double> a(n);
+    for (py::ssize_t k = 0; k < n; ++k) a.mutable_at(k) = std::strtod(field(ref.poses[static_cast<std::size_t>(k)]).c_str(), nullptr);
+    return a;
+  };
+  auto solved_value = [](const rollkin::ReferencePose& p, const std::string& v) {
+    const bool ok = p.status == rollkin::SolveStatus::Converged || p.status == rollkin::SolveStatus::Singular;
+    return ok ? v : std::string("nan");
+  };
+  py::dict out;
+  out[py::str(ref.variables[static_cast<std::size_t>(input)])] = column([](const rollkin::ReferencePose& p) { return p.input; });
+  for (int i = 0; i < m.variable_count(); ++i)
+    if (i != input)
+      out[py::str(ref.variables[static_cast<std::size_t>(i)])] =
+          column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.q[static_cast<std::size_t>(i)]); });
+  out["residual"] = column([&](const rollkin::ReferencePose& p) { return solved_value(p, p.residual); });
+  std::vector<std::string> status;
+  for (const auto& p : ref.poses) status.emplace_back(rollkin::to_string(p.status));
+  out["status"] = str_array(status);
+  return out;
+}
+
+py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int threads) {
+  std::vector<Job> jobs;
+  for (const PyScene& s : scenes) jobs.push_back(prepare(s, r));
+  run_all(jobs, r, threads);
+  for (const Job& j : jobs)
+    if (j.error) std::rethrow_exception(j.error);
+  py::list out;
+  for (const Job& j : jobs) out.append(to_dict(j));
+  return out;
+}
+
+Request request(std::optional<double> start, std::optional<double> stop, std::optional<double> step, bool analysis,
+                bool rates, double max_steps) {
+  return Request{start, stop, step, analysis, rates, max_steps};
+}
+
+// ---- docstrings ------------------------------------------------------------------------------------------
+
+const char* const kSolveDoc = R"(Sweeps the scene's input and returns its table.
+
+start, stop, step: the sweep of the scene's input in the file's units (degrees for an angle in a "deg" scene);
+each None keeps the scene's "sweep" (a scene without one needs all three).
+analysis=True adds the contact analysis columns (as --analysis), rates=True the rate columns (as --rates).
+max_steps bounds the work like the CLI's --max-steps (ValueError above it).
+
+Returns a dict: CSV column name -> numpy float64 array (one value per input value, NaN where the pose was not
+solved), and "status" -> numpy array of str ("ok", "singular", "dead_point", "domain_exit", "corner",
+"no_convergence", "not_reached"); the same columns, in the same order, and the same values as
+`rollkin solve SCENE --from START --to STOP --step STEP --csv`.
+Raises InputError when the mechanism cannot be assembled (the CLI's exit 2), ValueError for a bad sweep.
+The GIL is released while solving; Ctrl-C raises KeyboardInterrupt within about 50 ms of the next pose.)";
+
+const char* const kSolveManyDoc = R"(Solves several scenes over the same sweep, on worker threads.
+
+scenes: a list of Scene; start, stop, step, analysis, rates, max_steps: as Scene.solve (None keeps each
+scene's own "sweep"). threads: the number of worker threads, 0 for one per core.
+Returns a list of dicts, one per scene in order, each as Scene.solve returns it. A scene that cannot be
+assembled does not stop the batch: its dict has NaN values and the status "cannot_assemble" in every row
+and "error": the InputError message Scene.solve would raise for it. The GIL is released while solving; Ctrl-C
+cancels the workers between poses and raises KeyboardInterrupt within a second.)";
+
+const char* const kWriteDoc = R"(Solves like solve() and writes the CLI's output files from the result.
+
+csv, plot, draw, animate: paths (None: not written) of the files `rollkin solve --csv --plot --draw --animate`
+writes: the table, the charts (with analysis=True also the analysis charts), the drawing of the mechanism and
+the self-contained HTML animation. Every path is checked before solving; a path that is one of the scene's
+input files, a missing directory or a directory raises OutputError (an OSError) and nothing is written. The
+files are written all or nothing, each through a temporary in its own directory. Returns the table as solve().)";
+
+const char* const kCentrodesDoc = R"(The centrodes of link_b's motion relative to link_a over the sweep.
+
+Returns a dict: the input column (as in solve()), "a" and "b": (n, 2) arrays of the instant centre in link_a's
+frame (the fixed centrode when link_a is the ground) and in link_b's frame (the moving centrode), "world": in
+the world frame, "finite": False where the centre is at infinity (pure relative translation) or the pose was not
+solved (NaN rows), "status" as in solve(). dxf: a path for both centrodes as DXF splines (as the CLI's
+`rollkin centrodes --dxf`), written only after the sweep succeeded, never over an input file.)";
+
+const char* const kReferenceDoc = R"(The same assembly and sweep solved in MPFR with `digits` decimal digits (30, 50, 100).
+
+Returns a dict of float64 arrays with the columns of `rollkin reference --csv` (the input, every other
+variable in the file's units, "residual") and "status": each value is the high-precision result rounded once
+to the nearest double, so solve()'s columns can be compared with it to measure the double solver's error.
+The MPFR run takes milliseconds per pose; it holds no GIL but cannot be interrupted before it ends.)";
+
+}  // namespace
+
+void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
+  scene
+      .def("solve",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              bool analysis, bool rates, double max_steps) {
+             return solve(s, request(start, stop, step, analysis, rates, max_steps));
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = 1e7, kSolveDoc)
+      .def("write",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              const py::object& csv, const py::object& plot, const py::object& draw, const py::object& animate,
+              bool analysis, bool rates, double max_steps) {
+             namespace cli = rollkin::cli;
+             return write(s, request(start, stop, step, analysis, rates, max_steps),
+                          {{"csv", csv, [rates](const rollkin::io::SweepOutput& o) { return cli::csv_text(o, rates); }},
+                           {"plot", plot, &cli::plot_svg},
+                           {"draw", draw, &cli::draw_svg},
+                           {"animate", animate, &cli::animation_html}});
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("draw") = py::none(),
+           py::arg("animate") = py::none(), py::arg("analysis") = false, py::arg("rates") = false,
+           py::arg("max_steps") = 1e7, kWriteDoc)
+      .def("centrodes",
+           [](const PyScene& s, const std::string& a, const std::string& b, std::optional<double> start,
+              std::optional<double> stop, std::optional<double> step, const py::object& dxf, double max_steps) {
+             return centrodes(s, a, b, request(start, stop, step, false, false, max_steps), dxf);
+           },
+           py::arg("link_a"), py::arg("link_b"), py::arg("start") = py::none(), py::arg("stop") = py::none(),
+           py::arg("step") = py::none(), py::kw_only(), py::arg("dxf") = py::none(), py::arg("max_steps") = 1e7,
+           kCentrodesDoc)
+      .def("reference",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              int digits, double max_steps) {
+             return reference(s, request(start, stop, step, false, false, max_steps), digits);
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("digits") = 50, py::arg("max_steps") = 1e7, kReferenceDoc);
+
+  m.def("solve_many",
+        [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
+           std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {
+          return solve_many(scenes, request(start, stop, step, analysis, rates, max_steps), threads);
+        },
+        py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
+        py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
+        py::arg("max_steps") = 1e7, kSolveManyDoc);
+  m.def("_sweep_seconds",
+        [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
+          // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
+          // table and no NumPy, for the overhead of Python and dask per variant against it.
+          Job job = prepare(s, request(start, stop, step, false, false, 1e7));
+          py::gil_scoped_release nogil;
+          const auto t0 = std::chrono::steady_clock::now();
+          const rollkin::Mechanism<double>& m = job.scene->mechanism;
+          rollkin::SolveData<double> sd(m);
+          rollkin::VectorX<double> q = job.scene->guess;
+          const auto assembly = rollkin::assemble(m, q, sd, job.scene->held);
+          [[maybe_unused]] const auto result = rollkin::sweep(m, sd, q, assembly, job.sweep.driver, job.inputs);
+          const std::chrono::duration<double> t = std::chrono::steady_clock::now() - t0;
+          return t.count();
+        },
+        py::arg("scene"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none());
+}
+
+}  // namespace rollkin::python

@@ -1,0 +1,284 @@
+// `rollkin solve`: one scene or several (--jobs), assembly, sweep, the outputs (CSV, plot, drawing,
+// animation), the summary, the assembly report (--verbose) and the interference check (--interference).
+#include "commands.hpp"
+#include "animation.hpp"
+
+#include "rollkin/solve/batch.hpp"
+#include "rollkin/solve/interference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace rollkin::cli {
+namespace {
+
+void print_assembly(std::ostream& out, const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
+  const Mechanism<double>& m = scene.mechanism;
+  for (const std::string& n : scene.notes) out << "contour " << n << "\n";
+  out << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
+            << fmt(rep.residual, 3) << "\n"
+            << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()
+            << "), equations " << m.equation_count() << " (" << m.loops.size() << " loop(s) x 3 + "
+            << m.rolling_pairs.size() << " rolling)\n"
+            << "  rank of the unknowns' Jacobian " << rep.rank << ", condition " << fmt(rep.condition, 3) << "\n"
+            << "  rank of the full Jacobian " << ar.rank << ": redundant constraints " << ar.redundant
+            << ", mobility (DOF = variables - rank) " << ar.mobility << "\n";
+  if (!rep.detail.empty()) out << "  " << rep.detail << "\n";
+  if (m.unknowns.empty())
+    out << "  nothing to solve: every pair variable is an input, so each pose follows from the inputs alone"
+                 " (forward kinematics)\n";
+  else if (ar.mobility == 0)
+    out << "  the mechanism has zero degrees of freedom: it is a rigid structure, its inputs cannot move\n";
+}
+
+/// Contact pairs whose signed curvatures cancel at q (osculation): their contact Jacobian is singular
+/// (docs/method.md section 5), which the solver reports only as a rank loss.
+std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const VectorX<double>& q) {
+  std::vector<std::string> out;
+  KinematicsData<double> kin(m);
+  evaluate_pairs<double>(m, q, nullptr, 2, kin);
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    if (!is_contact(m.pairs[k].kind)) continue;
+    const double ka = kin.pairs[k].contact[0].curvature(), kb = kin.pairs[k].contact[1].curvature();
+    const double size = std::max(std::abs(ka), std::abs(kb));
+    if (size > 0 && std::abs(ka + kb) <= 1e-6 * size)
+      out.push_back("osculation: at the assembly pose the contours of pair '" + m.pairs[k].name +
+                    "' osculate (signed curvatures " + fmt(ka) + " and " + fmt(kb) +
+                    " cancel), so the contact Jacobian is singular there; choose another assembly pose or geometry");
+  }
+  return out;
+}
+
+/// --interference: contours sampled once in their links' frames and checked at every solved pose
+/// (solve/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
+/// file's units, with the chords' distance from the curves and the touch tolerance.
+std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
+  const Mechanism<double>& m = scene.mechanism;
+  const SweepInterference si = check_interference(m, result);
+  struct Run {
+    InterferenceKind kind;
+    int a, b;
+    double from, to;
+    bool open;
+  };
+  std::vector<Run> runs;
+  for (const auto& pose : si.poses) {
+    for (auto& r : runs) r.open = r.open && pose.checked && !pose.clear();
+    for (const auto& f : pose.findings) {
+      Run* run = nullptr;
+      for (auto& r : runs)
+        if (r.open && r.kind == f.kind && r.a == f.contour_a && r.b == f.contour_b) run = &r;
+      if (run) run->to = pose.input;
+      else runs.push_back(Run{f.kind, f.contour_a, f.contour_b, pose.input, pose.input, true});
+    }
+  }
+  std::vector<std::string> lines;
+  const std::string unit = scene.unit_label(sw.variable);
+  for (const auto& r : runs)
+    lines.push_back(std::string("interference: ") + to_string(r.kind) + " between '" + m.contours[r.a].name() +
+                    "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
+                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit) + " (decided on chords within " +
+                    fmt(std::max(si.chord_error[r.a], si.chord_error[r.b]), 2) + " " + scene.length_unit +
+                    " of the contours, touch tolerance " + fmt(si.touch_tolerance, 2) + " " + scene.length_unit + ")");
+  return lines;
+}
+
+// ---- rollkin solve ---------------------------------------------------------------------------------------
+
+struct SolveOptions {
+  SweepRequest sweep;
+  std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
+  std::string csv, plot, draw, animate;
+  bool rates = false, analysis = false, verbose = false, interference = false;
+  int jobs = 0;  // scenes solved at once (0: one per core)
+};
+
+int run_solve(const SolveOptions& o);
+
+}  // namespace
+
+Command solve_command(CLI::App& rollkin) {
+  auto o = std::make_shared<SolveOptions>();
+  CLI::App* app = rollkin.add_subcommand("solve", "assemble the mechanism and sweep its input (double precision)");
+  add_sweep_options(*app, o->sweep, &o->scenes);
+  add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
+  add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
+  add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at four poses across the solved range, one panel each");
+  add_output(*app, "--animate", o->animate,
+             "self-contained HTML page animating the mechanism over the solved poses (play/pause, slider)");
+  app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
+  app->add_flag("--analysis", o->analysis,
+                "add the contact analysis columns to the CSV and charts to the plot: pressure angle, sliding, "
+                "curvatures, link accelerations and jerks (docs/analysis.md)");
+  app->add_flag("-v,--verbose", o->verbose,
+                "print the assembly report, how imported contours were converted and the design check (as 'rollkin check')");
+  app->add_flag("--interference", o->interference,
+                "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
+  app->add_option("-j,--jobs", o->jobs, "with several scenes: how many are solved at once (default 0: one per core)")
+      ->type_name("N")
+      ->check(number("a number of scenes at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
+  app->footer(
+      "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
+      "--step override it), following one branch in both directions from the assembly pose.\n"
+      "CSV columns: angles in degrees, lengths in scene units. Without output options a one-line summary is\n"
+      "printed.\n"
+      "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
+      "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
+      "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
+      "--max-steps: the estimate is the input's travel over the largest sub-step (5 deg for angles) plus the\n"
+      "number of values.\n"
+      "Several scenes (rollkin solve A.json B.json ... --jobs N): each is solved as if alone, N at a time, with\n"
+      "the same options; every output name must contain {scene}, replaced by each scene file's name without\n"
+      "its extension (--csv 'out/{scene}.csv'). Reports come in the order the scenes were given; a scene that\n"
+      "fails does not stop the others; the exit status is the worst of the scenes'.\n" +
+      std::string(kExitStatus));
+  return {app, [o] { return run_solve(*o); }};
+}
+
+namespace {
+
+/// `rollkin solve` on one scene (o.sweep.scene): assembly, sweep, outputs, summary on `out`, one line per
+/// problem on `err`.
+int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
+  SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}});
+  const io::Scene& scene = run.scene;
+  const io::Sweep& sw = run.sweep;
+  const std::vector<double>& inputs = run.inputs;
+  const Mechanism<double>& m = scene.mechanism;
+
+  SolveData<double> sd(m);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  if (o.verbose) print_assembly(out, scene, assembly, cli::full_rank(m, sd));
+  g_doing = "solving the sweep";
+  const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
+
+  // Everything is computed before anything is written, and then written all or nothing.
+  g_doing = "building the output files";
+  const std::vector<double> file_values = io::sweep_values(sw);
+  const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, result) : cli::SweepAnalysis{};
+  const cli::OutputContext ctx{scene, sw, result, file_values, o.analysis ? &analysis : nullptr};
+  run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
+  run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
+  run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
+  run.set_output("--animate", [&] { return cli::animation_html(ctx); });
+  g_doing = "writing the output files";
+  run.outputs.commit();
+  g_doing = "reporting";
+
+  std::size_t solved = 0;
+  double max_residual = 0;
+  for (const auto& p : result.poses)
+    if (p.report.ok()) {
+      ++solved;
+      max_residual = std::max(max_residual, p.report.residual);
+    }
+  std::size_t singular = 0;
+  std::vector<std::string> problems = sweep_problems(scene, sw, assembly, result, singular);
+  const std::vector<std::string> clashes = o.interference ? interference_lines(scene, sw, result) : std::vector<std::string>{};
+  problems.insert(problems.end(), clashes.begin(), clashes.end());
+  if (!assembly.ok())
+    for (const auto& note : osculating_contacts(m, q)) problems.push_back(note);
+
+  const std::string unit = scene.unit_label(sw.variable);
+  std::ostringstream summary;
+  summary << fs::path(scene.file).filename().string() << ": " << solved << "/" << inputs.size() << " poses solved, "
+          << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to) << (unit.empty() ? "" : " " + unit)
+          << ", max residual " << fmt(max_residual, 2) << ", ";
+  if (!assembly.ok()) {
+    summary << "assembly failed (" << to_string(assembly.status) << ")";
+  } else if (result.limits.empty()) {
+    summary << "no limits met";
+  } else {
+    summary << result.limits.size() << " limit(s) met:";
+    for (std::size_t i = 0; i < result.limits.size(); ++i)
+      summary << (i ? "," : "") << " " << to_string(result.limits[i].status) << " at "
+              << fmt(result.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
+  }
+  if (singular) summary << ", " << singular << " singular pose(s)";
+  out << summary.str() << "\n";
+  if (o.verbose) {
+    const DesignReport design = design_report(scene, sw, result);
+    for (const auto& l : design.section) out << l << "\n";
+    for (const auto& f : design.findings) out << "  " << f << "\n";
+  }
+  for (const auto& p : problems) err << scene.file << ": " << p << "\n";
+  return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
+}
+
+/// The options of each of several scenes: {scene} in every output name replaced by the scene file's stem.
+/// UsageError for an output name without {scene}, two scenes with the same stem, or an output that would
+/// be one of the scene files.
+std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
+  std::vector<SolveOptions> each;
+  std::map<std::string, std::string> stems;  // stem -> scene file
+  for (const std::string& file : o.scenes) {
+    const std::string stem = fs::path(file).stem().string();
+    const auto [at, fresh] = stems.emplace(stem, file);
+    if (!fresh)
+      throw UsageError("scenes '" + at->second + "' and '" + file + "' have the same name \"" + stem +
+                       "\": their output files ({scene}) would be the same; rename one");
+    SolveOptions one = o;
+    one.scenes = {file};
+    one.sweep.scene = file;
+    for (auto [option, path] : {std::pair{"--csv", &one.csv}, {"--plot", &one.plot}, {"--draw", &one.draw},
+                                {"--animate", &one.animate}}) {
+      if (path->empty()) continue;
+      const std::size_t at_token = path->find("{scene}");
+      if (at_token == std::string::npos)
+        throw UsageError(std::string(option) + " '" + *path + "': with several scenes each needs its own file; put " +
+                         "{scene} in the name, e.g. 'out/{scene}.csv'");
+      path->replace(at_token, 7, stem);
+      for (const std::string& input : o.scenes)
+        if (std::error_code ec; fs::equivalent(*path, input, ec))
+          throw UsageError(std::string(option) + " '" + *path + "' is the scene file '" + input +
+                           "'; inputs are never overwritten, choose another name");
+    }
+    each.push_back(std::move(one));
+  }
+  return each;
+}
+
+/// Several scenes: each solved as alone (solve_scene) on up to o.jobs threads, its report kept and printed in
+/// the order given; a scene's error is reported as the command line would report it alone and does not stop
+/// the others. The exit status is the worst of the scenes'.
+int solve_scenes(const SolveOptions& o) {
+  const std::vector<SolveOptions> each = per_scene_options(o);
+  struct Report {
+    std::ostringstream out, err;
+    int status = 0;
+  };
+  std::vector<Report> reports(each.size());
+  run_batch(each.size(), o.jobs, [&](std::size_t k, const std::atomic<bool>&) {
+    Report& r = reports[k];
+    try {
+      r.status = solve_scene(each[k], r.out, r.err);
+    } catch (const UsageError& e) {
+      r.err << "rollkin: " << each[k].sweep.scene << ": " << e.what() << "\n";
+      r.status = 2;
+    } catch (...) {
+      r.status = error_status(r.err);
+    }
+  });
+  int status = 0;
+  for (const Report& r : reports) {
+    std::cout << r.out.str();
+    std::cerr << r.err.str();
+    status = std::max(status, r.status);
+  }
+  return status;
+}
+
+/// `rollkin solve`: one scene, or several (solve_scenes).
+int run_solve(const SolveOptions& o) {
+  if (o.scenes.size() > 1) return solve_scenes(o);
+  SolveOptions one = o;
+  one.sweep.scene = o.scenes.front();
+  return solve_scene(one, std::cout, std::cerr);
+}
+
+}  // namespace
+}  // namespace rollkin::cli

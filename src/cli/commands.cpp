@@ -1,0 +1,229 @@
+// What the commands of build/rollkin share (declared and documented in commands.hpp): the option helpers,
+// the start of every sweeping command (SweepRun: scene, outputs, sweep, bounded work), the assembly, the
+// messages of a sweep's problems and the exit status of an error.
+#include "commands.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
+#include <new>
+#include <sstream>
+
+namespace rollkin::cli {
+
+thread_local const char* g_doing = "starting";  // per thread: several scenes may be solved at once (--jobs)
+
+const char* kExitStatus =
+    "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
+    "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
+    "3 out of memory (nothing written).";
+
+// ---- option values: fully parsed, checked before anything is read ------------------------------------------
+
+std::optional<double> finite_number(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+CLI::Validator number(const std::string& expected, std::function<bool(double)> accept) {
+  return CLI::Validator(
+      [expected, accept](std::string& text) -> std::string {
+        const std::optional<double> v = finite_number(text);
+        if (v && (!accept || accept(*v))) return {};
+        return "expects " + expected + ", got \"" + text + "\"";
+      },
+      "", "");
+}
+
+namespace {
+
+/// A check of an output file name: not empty, and not an option (CLI11 gives the next argument to an option
+/// that needs a value, so "--csv --rates" would otherwise write a file named "--rates").
+const CLI::Validator kFileName(
+    [](std::string& text) -> std::string {
+      if (text.empty()) return "expects a file name, got an empty string";
+      if (text.rfind("--", 0) == 0)
+        return "expects a file name, got the option \"" + text + "\" (for a file of that name write ./" + text + ")";
+      return {};
+    },
+    "", "");
+
+}  // namespace
+
+CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, std::string& text,
+                        const std::string& help) {
+  return app.add_option_function<std::string>(name, [&slot, &text](const std::string& v) {
+              text = v;
+              slot = finite_number(v);  // the check below accepted it
+            }, help)
+      ->type_name("V")
+      ->check(number("a number"));
+}
+
+CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slot, const std::string& help) {
+  return app.add_option(name, slot, help)->type_name("FILE")->check(kFileName);
+}
+
+// ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
+
+void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>* scenes) {
+  if (scenes)
+    app.add_option("SCENE", *scenes, "the scene(s): JSON files (docs/scene_format.md)")->required()->type_name("");
+  else
+    app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
+  add_number(app, "--from", r.from, r.from_text, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
+  add_number(app, "--to", r.to, r.to_text, "last input value (overrides the scene's \"sweep\")");
+  add_number(app, "--step", r.step, r.step_text, "step between input values, signed from --from toward --to");
+  app.add_option("--max-steps", r.max_steps,
+                 "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps (default 1e7)")
+      ->type_name("N")
+      ->check(number("a positive number of sub-steps (at least 1)", [](double v) { return v >= 1; }));
+}
+
+namespace {
+
+/// The sweep to run: the scene's, with the command line's overrides.
+io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
+  std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
+  if (!s) throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
+  if (r.from) s->from_text = r.from_text;
+  if (r.to) s->to_text = r.to_text;
+  if (r.step) s->step_text = r.step_text;
+  const std::string bad = io::check_sweep(*s);
+  if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
+  return *s;
+}
+
+/// Bounded work: refuses before solving a request whose estimated continuation sub-steps exceed --max-steps.
+void check_work(const io::Scene& scene, const io::Sweep& sw, const std::vector<double>& inputs, double max_steps) {
+  const double estimate = estimate_substeps(scene.mechanism, scene.guess, sw.driver, inputs);
+  if (estimate <= max_steps) return;
+  std::ostringstream os;
+  os << "the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
+     << std::scientific << std::setprecision(2) << estimate << " continuation sub-steps, above the limit "
+     << max_steps << " (--max-steps); ask for a smaller range (--from/--to), a larger --step (fewer values),"
+     << " or raise the limit with --max-steps";
+  throw UsageError(os.str());
+}
+
+}  // namespace
+
+SweepRun::SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
+    : scene(read_scene(r.scene)), outputs(files_read(scene)) {
+  g_doing = "checking the output files";
+  for (const auto& [option, path] : output_files)
+    if (!path.empty()) given_[option] = outputs.add(option, path);
+  sweep = requested_sweep(scene, r);
+  inputs = io::sweep_inputs(sweep);
+  check_work(scene, sweep, inputs, r.max_steps);
+}
+
+void SweepRun::set_output(const std::string& option, const std::function<std::string()>& make_text) {
+  const auto it = given_.find(option);
+  if (it != given_.end()) outputs.set(it->second, make_text());
+}
+
+void SweepRun::stream_output(const std::string& option, std::function<void(io::OutputSink&)> write) {
+  const auto it = given_.find(option);
+  if (it != given_.end()) outputs.set_writer(it->second, std::move(write));
+}
+
+io::Scene SweepRun::read_scene(const std::string& file) {
+  g_doing = "reading the scene";
+  return io::load_scene(file);
+}
+
+std::vector<std::string> SweepRun::files_read(const io::Scene& scene) {
+  std::vector<std::string> files{scene.file};
+  files.insert(files.end(), scene.files_read.begin(), scene.files_read.end());
+  return files;
+}
+
+SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q) {
+  g_doing = "assembling the mechanism";
+  q = scene.guess;
+  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+  if (assembly.status == SolveStatus::CannotAssemble) throw io::assembly_error(scene, assembly.detail);
+  return assembly;
+}
+
+// ---- messages and reports ---------------------------------------------------------------------------------
+
+std::string fmt(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal) {
+  const std::string unit = scene.unit_label(sw.variable);
+  return sw.input + " = " + fmt(internal / sw.unit, 8) + (unit.empty() ? "" : " " + unit);
+}
+
+std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r) {
+  const Mechanism<double>& m = scene.mechanism;
+  const std::string where = input_text(scene, sw, r.limit_input);
+  switch (r.status) {
+    case SolveStatus::DeadPoint:
+      return "dead_point: dead point (motion limit) at " + where + ": the mechanism cannot move past it (Jacobian " +
+             "singular there, condition " + fmt(r.condition, 3) + ")";
+    case SolveStatus::DomainExit: {
+      std::string what = "a contact leaves its contour";
+      if (r.pair >= 0 && r.contour >= 0)
+        what = "the contact of pair '" + m.pairs[r.pair].name + "' leaves the end of contour '" + m.contours[r.contour].name() + "'";
+      return "domain_exit: " + what + " at " + where;
+    }
+    case SolveStatus::Corner: {
+      const ContourCorner<double>& k = m.contours[r.contour].corners()[static_cast<std::size_t>(r.corner)];
+      return "corner: the contact of pair '" + m.pairs[r.pair].name + "' reaches a corner of contour '" +
+             m.contours[r.contour].name() + "' (" + k.label + "; (" + fmt(k.point.x(), 10) + ", " + fmt(k.point.y(), 10) +
+             ") in the contour's frame) at " + where + ": a contact cannot pass a corner";
+    }
+    case SolveStatus::NoConvergence: return "no_convergence: Newton-Raphson does not converge beyond " + where;
+    default: return std::string(to_string(r.status)) + ": " + r.detail + " (at " + where + ")";
+  }
+}
+
+std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& assembly,
+                                        const SweepResult<double>& result, std::size_t& singular) {
+  std::vector<std::string> problems;
+  if (!assembly.ok())
+    problems.push_back(std::string(to_string(assembly.status)) + ": assembly failed: " +
+                       (assembly.detail.empty() ? "the mechanism cannot be assembled" : assembly.detail) +
+                       " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
+                       " unknowns, condition " + fmt(assembly.condition, 3) + ")");
+  for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+  singular = 0;
+  for (const auto& p : result.poses)
+    if (p.report.status == SolveStatus::Singular) {
+      ++singular;
+      problems.push_back("singular: singular pose at " + input_text(scene, sw, p.input) +
+                         ": the branches meet / Jacobian singular; values follow the branch (interpolated between"
+                         " the regular poses on both sides, condition " + fmt(p.report.condition, 3) + ")");
+    }
+  return problems;
+}
+
+int error_status(std::ostream& err) {
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    err << "rollkin: out of memory while " << g_doing
+        << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
+    return 3;
+  } catch (const InputError& e) {
+    err << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "rollkin: error: " << e.what() << "\n";
+    return 2;
+  } catch (...) {
+    err << "rollkin: unexpected error\n";
+    return 2;
+  }
+}
+
+}  // namespace rollkin::cli

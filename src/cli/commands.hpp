@@ -1,0 +1,145 @@
+// The parts the commands of build/rollkin share (src/cli/commands.cpp): the command type, the option helpers,
+// the sweep every sweeping command runs (SweepRequest, SweepRun), the messages of a sweep's problems, the
+// design check's text (src/cli/command_check.cpp) and the exit status of an error. Each command is one file
+// src/cli/command_<name>.cpp declaring its options and running it; main.cpp lists the commands.
+#pragma once
+#include "output.hpp"
+
+#include "rollkin/design_check.hpp"
+#include "rollkin/io/output_set.hpp"
+#include "rollkin/io/scene.hpp"
+#include "rollkin/solve/continuation.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rollkin::cli {
+
+namespace fs = std::filesystem;
+
+/// A command line that parses but asks for something that cannot be done (found after reading the scene).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// What the run is doing, for the message of an allocation failure ("out of memory while ...").
+/// Per thread: several scenes may be solved at once (--jobs).
+extern thread_local const char* g_doing;
+
+/// Inside a catch block: the message for the exception being handled (other than a UsageError) on `err`, and
+/// the exit status: 3 out of memory, 2 anything else (bad input, an output that cannot be written).
+int error_status(std::ostream& err);
+
+/// The exit statuses, as the footer of every command's --help.
+extern const char* kExitStatus;
+
+/// A command: its CLI11 subcommand (options bound to the values the parse fills in) and the function that runs
+/// it with those values.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+// The commands (src/cli/command_<name>.cpp): each declares its subcommand on `rollkin` and returns it with the
+// function that runs it.
+Command solve_command(CLI::App& rollkin);
+Command reference_command(CLI::App& rollkin);
+Command centrodes_command(CLI::App& rollkin);
+Command check_command(CLI::App& rollkin);
+
+// ---- option values: fully parsed, checked before anything is read ------------------------------------------
+
+/// `text` as a finite number, all of it ("1x", "", "nan", "inf" are not).
+std::optional<double> finite_number(const std::string& text);
+
+/// A check of an option's value: a finite number (for which `accept`, when given, is true). CLI11 names the
+/// option in front of the message: "--step: expects a number, got \"1x\"".
+CLI::Validator number(const std::string& expected, std::function<bool(double)> accept = {});
+
+/// The option `name` storing a number in `slot` when given, and the text it was given as in `text`.
+CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, std::string& text,
+                        const std::string& help);
+
+/// The option `name` storing an output file name in `slot`.
+CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slot, const std::string& help);
+
+// ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
+
+/// The scene and the part of the sweep the command line may override.
+struct SweepRequest {
+  std::string scene;
+  std::optional<double> from, to, step;
+  std::string from_text, to_text, step_text;  // as given: the grid is the decimal one (solve/sweep_grid.hpp)
+  double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
+};
+
+/// The sweep options; the positional SCENE goes to r.scene, or, when `scenes` is given, one or more of them.
+void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>* scenes = nullptr);
+
+/// The start of every sweeping command: the scene read, the output files checked against the files it read
+/// (and against each other) before anything is solved, the requested sweep built and its work bounded.
+/// Outputs are written all or nothing at the end (`outputs.commit()`).
+struct SweepRun {
+  io::Scene scene;
+  io::OutputSet outputs;
+  io::Sweep sweep;
+  std::vector<double> inputs;  // the sweep's input values, internal units
+
+  /// `output_files`: (option, path) of every output the command may write; path "" for one not given.
+  SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files);
+
+  /// Sets the content of the output file named by `option`, if the command line gave one (`make_text` is
+  /// called only then).
+  void set_output(const std::string& option, const std::function<std::string()>& make_text);
+
+  /// The same for an output streamed into its file at commit (io::OutputSet::set_writer).
+  void stream_output(const std::string& option, std::function<void(io::OutputSink&)> write);
+
+ private:
+  std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
+
+  static io::Scene read_scene(const std::string& file);
+  static std::vector<std::string> files_read(const io::Scene& scene);
+};
+
+/// Assembles the scene's mechanism into q (sd ready for sweep()). Inconsistent constraints at assembly are a
+/// problem of the scene (sizes, frames, values), not a motion limit: an InputError (exit 2, nothing written).
+SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q);
+
+// ---- messages and reports ---------------------------------------------------------------------------------
+
+/// v with `digits` significant digits (printf's %g).
+std::string fmt(double v, int digits = 6);
+
+/// "O_A.theta2 = -57.397 deg" in the file's units.
+std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal);
+
+/// One line per limit for stderr, the input in the file's units.
+std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r);
+
+/// One line per problem of a sweep: a failed assembly, each limit met, each singular pose (counted in
+/// `singular`).
+std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& assembly,
+                                        const SweepResult<double>& result, std::size_t& singular);
+
+// ---- the design check (rollkin check, solve --verbose; src/cli/command_check.cpp) --------------------------
+
+/// The design check's text: the report section for stdout and one located line per impossible design
+/// (a pair whose contours interpenetrate: a roller too large for a concave part of the other contour).
+struct DesignReport {
+  std::vector<std::string> section, findings;
+};
+
+/// The design check of a solved sweep (rollkin/design_check.hpp) as text.
+DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result);
+
+}  // namespace rollkin::cli
