@@ -41,8 +41,9 @@ using SparseFactors = std::conditional_t<sparse_factorisation_available<S>, Spar
 /// the sizes of planar mechanisms); a system with redundant constraints by the same LU on independent rows,
 /// chosen once by a rank-revealing QR and again only where they fail (factor_selected_rows); a rank-deficient
 /// or numerically singular system by the rank-revealing complete orthogonal decomposition, whose solve is the
-/// minimum-norm least-squares step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp) factors the independent
-/// rows, found once, by a sparse LU whose symbolic analysis is done once; a pose where that LU is singular
+/// minimum-norm least-squares step. From sparse_threshold unknowns (double) the sparse path (sparse_lu.hpp)
+/// factors the independent rows, found once, by a sparse LU whose symbolic analysis is done once; its
+/// condition is the larger of its pivot ratio and a one-solve estimate; a pose where that LU is singular
 /// or ill-conditioned takes the dense decomposition instead (same statuses, rank and condition as the dense
 /// path), and the independent rows are chosen again at the next pose if the system had rank n there.
 template <class S> struct SolveData {
@@ -289,7 +290,7 @@ template <class S> struct SolveData {
   }
 
   /// Sparse LU of the independent rows among the first `rows` (chosen at the first pose, again after a
-  /// pose where they failed or were fewer than the unknowns). False when the dense decomposition must do
+  /// pose where their LU failed while the system had rank n, see factor()). False when the dense decomposition must do
   /// this pose.
   bool factor_sparse(int rows) {
     const auto n = static_cast<int>(unknowns.size());
