@@ -176,35 +176,39 @@ template <class S> class Tracer {
   }
 
   /// A converged trial whose values are not accurate: the Jacobian of the unknowns is rank deficient, or its
-  /// condition times the residual of the square system it factors (a bound on the error of the unknowns)
-  /// exceeds eps^(2/3). With redundant constraints that is the residual of the independent rows the LU takes
-  /// (SolveData::square_residual), not of all rows: those keep the least-squares floor of their disagreement
-  /// (sampled contours). It is taken as at least eps, the round-off of evaluating it: the few rows an LU
-  /// solves can come out exactly zero at a change point, where the unknowns are anything but exact. A pose no
-  /// LU could take (the COD) is singular.
+  /// error bound (SolveData::error_bound: condition x the residual of the square system its LU solves)
+  /// exceeds eps^(2/3) after Newton's refining step (solve_position). A pose no LU could take (the COD) is
+  /// singular.
   bool singular_trial(const SolveReport<S>& rep) const {
-    using std::max;
     if (rep.status == SolveStatus::Underdetermined) return start_.ok();
-    const S residual = rep.equations == rep.unknowns ? rep.residual : max(sd_.square_residual(), epsilon<S>());
-    return rep.ok() && rep.condition * residual > tolerance<S>(S(2) / S(3));
+    return rep.ok() && sd_.error_bound(rep.residual, rep.equations) > tolerance<S>(S(2) / S(3));
   }
 
   /// From the current (regular) pose, steps over the singular input t to a regular pose beyond it, at least
-  /// as far beyond as the current pose is before it (and at least cross_step). The far pose must be on the
-  /// same branch: the cubic Hermite through both regular poses must satisfy the constraints at t (to
-  /// eps^(1/2), against the O(h^4) interpolation error), which a pose on another branch or past a dead point
-  /// does not. On success the current pose becomes the far one and the span [previous pose, far pose] is
-  /// kept for interpolation.
+  /// as far beyond as the current pose is before it (and at least cross_step); a far pose that converges but
+  /// is still singular (the condition decays only like 1/distance from the singular point, and the condition
+  /// estimates of the dense and sparse paths differ) is tried again twice as far, up to far_tries times. The
+  /// far pose must be on the same branch: the cubic Hermite through both regular poses must satisfy the
+  /// constraints at t (to eps^(1/2), against the O(h^4) interpolation error), which a pose on another branch
+  /// or past a dead point does not. On success the current pose becomes the far one and the span
+  /// [previous pose, far pose] is kept for interpolation.
   bool step_over(const S& t, SolveReport<S>& rep, int& iterations, int& evaluations) {
     using std::abs;
     using std::max;
+    using std::min;
+    constexpr int far_tries = 4;
     const S before = t - q_(var_);
-    const S beyond = max(abs(before), cross_step_);
-    const S t_far = t + (before < S(0) ? S(-beyond) : beyond);
-    const bool accepted = try_step(t_far, rep);
-    iterations += rep.iterations;
-    evaluations += rep.evaluations;
-    if (!accepted || singular_trial(rep) || limits_.met(q_, trial_)) return false;
+    S beyond = max(abs(before), cross_step_), t_far = t;
+    for (int attempt = 1;; ++attempt) {
+      t_far = t + (before < S(0) ? S(-beyond) : beyond);
+      const bool accepted = try_step(t_far, rep);
+      iterations += rep.iterations;
+      evaluations += rep.evaluations;
+      if (!accepted || limits_.met(q_, trial_)) return false;
+      if (!singular_trial(rep)) break;
+      if (attempt == far_tries || beyond >= max_step_) return false;
+      beyond = min(S(beyond * S(2)), max_step_);
+    }
     const int sign = sd_.determinant_sign();
     solve_velocity(m_, sd_, rate_, held_v_);  // sd is factored at the far pose
     // Checked at t and at the middle of the span (t may lie next to an end, where any cubic fits).

@@ -171,6 +171,16 @@ template <class S> struct SolveData {
     return 0;
   }
 
+  /// The bound on the error of the unknowns at the pose just factored: the condition times the scaled
+  /// residual of the square system the LU solves (`residual`, all rows, when `rows` is the number of
+  /// unknowns; square_residual(), at least eps, with redundant rows: the few rows an LU solves can come out
+  /// exactly zero at a change point, where the unknowns are anything but exact).
+  S error_bound(const S& residual, int rows) const {
+    using std::max;
+    const bool square = rows == static_cast<int>(unknowns.size());
+    return condition * (square ? residual : max(square_residual(), epsilon<S>()));
+  }
+
   /// The scaled residual (max-norm) of the square system the active LU factors: all rows of a square
   /// system, the independent rows of a redundant one (dense or sparse). Its condition times this bounds the
   /// error of the unknowns, which the least-squares floor of redundant rows that disagree (sampled contours)
@@ -358,6 +368,31 @@ template <class S> void evaluate_and_factor(const Mechanism<S>& m, const VectorX
 /// On return q holds the last iterate and sd is evaluated and factored there. Plain Newton does not know
 /// branches: started from a poor guess near a motion limit it may converge to another assembly mode. The
 /// continuation (continuation.hpp) guards against that; call sweep() to follow a motion.
+namespace detail {
+
+/// A converged pose whose error bound (condition x residual, SolveData::error_bound) exceeds eps^(2/3) while
+/// a round-off residual would meet it: the residual tolerance (64 eps) let Newton stop before the unknowns
+/// were accurate, and one more step brings the residual to round-off. Not at a singular pose (condition
+/// x eps above eps^(2/3)), where no step can.
+template <class S> bool worth_refining(const SolveData<S>& sd, const SolveReport<S>& rep) {
+  const S limit = tolerance<S>(S(2) / S(3));
+  return rep.status == SolveStatus::Converged && sd.error_bound(rep.residual, rep.equations) > limit &&
+         sd.condition * epsilon<S>() <= limit;
+}
+
+/// The refining step did not lower the residual: back to the pose it started from (q minus the step),
+/// factored again there, with its report.
+template <class S>
+SolveReport<S> undo_refining_step(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd, int rows,
+                                  SolveReport<S> rep, int evaluations) {
+  for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) -= sd.step(c) * sd.col_scale(c);
+  evaluate_and_factor(m, q, sd, rows);
+  rep.evaluations = evaluations;
+  return rep;
+}
+
+}  // namespace detail
+
 template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd, int rows = -1) {
   if (rows < 0) rows = m.equation_count();
   const NewtonSettings<S>& cfg = sd.settings;
@@ -368,6 +403,7 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
   S residual_before = std::numeric_limits<S>::infinity();  // two iterations back: stagnation test
   S residual_last = std::numeric_limits<S>::infinity();
   bool stagnant = false;
+  SolveReport<S> before_refining;  // the converged pose a refining step started from (status Converged)
   for (int it = 0;; ++it) {
     evaluate_and_factor(m, q, sd, rows);
     rep.iterations = it;
@@ -375,15 +411,23 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     rep.residual = weighted_max_norm<S>(sd.kin.residual.head(rows), sd.row_weight.head(rows));
     rep.rank = sd.rank;
     rep.condition = sd.condition;
+    if (before_refining.ok()) {  // after the refining step: the better of the two poses
+      if (!(rep.residual < before_refining.residual))
+        return detail::undo_refining_step(m, q, sd, rows, before_refining, it + 2);
+      rep.status = before_refining.status;
+      return rep;
+    }
     const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
     // A least-squares residual that no longer halves in two iterations while the steps are small has reached
     // its minimum: consistent if within the tolerance, otherwise the constraints disagree.
     stagnant = it >= 2 && rep.residual > residual_before / S(2) && last_step <= tolerance<S>(S(1) / S(3));
     if (rep.residual <= cfg.residual_tolerance || settled || (stagnant && rep.residual <= cfg.consistency_tolerance)) {
       rep.status = rep.rank < rep.unknowns ? SolveStatus::Underdetermined : SolveStatus::Converged;
-      return rep;
+      if (it == cfg.max_iterations || !detail::worth_refining(sd, rep)) return rep;
+      before_refining = rep;  // one more step (detail::worth_refining)
+    } else if (it == cfg.max_iterations || stagnant) {
+      break;
     }
-    if (it == cfg.max_iterations || stagnant) break;
     residual_before = residual_last;
     residual_last = rep.residual;
     sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseProduct(sd.row_weight.head(rows));
