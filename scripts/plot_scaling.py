@@ -4,7 +4,7 @@
     build/rollkin_bench_scaling --csv out/scaling.csv
     python3 scripts/plot_scaling.py out/scaling.csv docs/img/scaling.svg
 
-One panel per family (gear_train, four_bar_chain), one line per factorisation; plain SVG (no plotting
+One panel per family (gear_train, four_bar_chain, cam_gear_train), one line per factorisation; plain SVG (no plotting
 library needed).
 """
 import csv
