@@ -1,4 +1,5 @@
-// The dense path's factorisation of redundant systems (solve/position.hpp, SolveData::factor): more rows than
+// Newton's refining step (solve/position.hpp, last case) and the dense path's factorisation of redundant systems
+// (solve/solve_data.hpp, SolveData::factor): more rows than
 // unknowns are solved by the LU of independent rows, chosen once by a rank-revealing QR and again where their
 // pivot ratio grows 16-fold (at that pose) or their LU fails while the system keeps rank n (the COD takes that
 // pose, new rows the next); a rank-deficient system by the COD. The Jacobian is set by hand on
@@ -143,4 +144,54 @@ BOOST_AUTO_TEST_CASE(a_rank_deficient_system_takes_the_cod) {
   BOOST_TEST((a * x - b).cwiseAbs().maxCoeff() < 1e-12);
   const Eigen::FullPivLU<MatrixX<double>> lu(a);
   BOOST_TEST((lu.kernel().transpose() * x).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+/// Moves the unknowns of q away from their solution along the right singular vector of the smallest singular
+/// value of the scaled Jacobian of the unknowns (dense path), by the amount whose scaled residual is `target`:
+/// the perturbation with the smallest residual for its size.
+void perturb_along_weakest_direction(const Fixture<double>& f, VectorX<double>& q, double target) {
+  SolveData<double> sd(f.mech, Factorisation::Dense);
+  const int rows = f.mech.equation_count();
+  evaluate_and_factor(f.mech, q, sd, rows);
+  const auto n = static_cast<Eigen::Index>(sd.unknowns.size());
+  MatrixX<double> ju(rows, n);
+  for (Eigen::Index r = 0; r < rows; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      ju(r, c) = sd.kin.jacobian(r, sd.unknowns[static_cast<std::size_t>(c)]) * sd.row_weight(r) * sd.col_scale(c);
+  const Eigen::BDCSVD<MatrixX<double>> svd(ju, Eigen::ComputeThinV);
+  const VectorX<double> weakest = svd.matrixV().col(n - 1);
+  const double amount = target / (svd.singularValues()(n - 1) * (ju * weakest).cwiseAbs().maxCoeff() /
+                                  (ju * weakest).norm());
+  for (Eigen::Index c = 0; c < n; ++c) q(sd.unknowns[static_cast<std::size_t>(c)]) += amount * weakest(c) * sd.col_scale(c);
+}
+
+BOOST_AUTO_TEST_CASE(newton_refines_a_converged_pose_whose_error_bound_is_not_yet_round_off) {
+  // Newton stops at a scaled residual of 64 eps (1.4e-14). With condition kappa the unknowns are then only
+  // known to kappa x 64 eps; solve_position takes one more step where that bound is above eps^(2/3) while
+  // kappa x eps is below it (detail::worth_refining). four_bar_chain(128) at its assembly pose theta = 0,
+  // known exactly (the fixture's guess: every rocker straight up), has condition about 1.5e4; moved along its
+  // weakest direction to a residual of 1e-14, the unknowns are off by far more than round-off.
+  const Fixture<double> chain = four_bar_chain<double>(128);
+  VectorX<double> q = chain.guess;
+  perturb_along_weakest_direction(chain, q, 1e-14);
+  const double off_before = (q - chain.guess).cwiseAbs().maxCoeff();
+  BOOST_TEST_REQUIRE(off_before > 1e-10);  // the case the residual tolerance alone would accept
+  SolveData<double> sd(chain.mech);
+  const SolveReport<double> rep = solve_position(chain.mech, q, sd);
+  BOOST_TEST_REQUIRE(rep.ok());
+  BOOST_TEST(rep.iterations == 1, "iterations " << rep.iterations);  // the refining step
+  // Round-off limit: condition x eps = 3.3e-12.
+  BOOST_TEST((q - chain.guess).cwiseAbs().maxCoeff() < 3e-12, "off by " << (q - chain.guess).cwiseAbs().maxCoeff()
+                                                                        << " (before: " << off_before << ")");
+  BOOST_TEST(sd.error_bound(rep.residual, rep.equations) <= tolerance<double>(2.0 / 3.0));
+
+  // A well-conditioned mechanism pays nothing: the paper example, moved the same way, stops at once.
+  const Fixture<double> paper = paper_fourbar<double>();
+  SolveData<double> paper_sd(paper.mech);
+  VectorX<double> p = paper.guess;
+  BOOST_TEST_REQUIRE(assemble(paper.mech, p, paper_sd, paper.held).ok());
+  perturb_along_weakest_direction(paper, p, 1e-14);
+  const SolveReport<double> paper_rep = solve_position(paper.mech, p, paper_sd);
+  BOOST_TEST_REQUIRE(paper_rep.ok());
+  BOOST_TEST(paper_rep.iterations == 0);
 }
