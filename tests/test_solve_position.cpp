@@ -156,12 +156,10 @@ void perturb_along_weakest_direction(const Fixture<double>& f, VectorX<double>& 
   const auto n = static_cast<Eigen::Index>(sd.unknowns.size());
   MatrixX<double> ju(rows, n);
   for (Eigen::Index r = 0; r < rows; ++r)
-    for (Eigen::Index c = 0; c < n; ++c)
-      ju(r, c) = sd.kin.jacobian(r, sd.unknowns[static_cast<std::size_t>(c)]) * sd.row_weight(r) * sd.col_scale(c);
+    for (Eigen::Index c = 0; c < n; ++c) ju(r, c) = sd.scaled_jacobian(r, c);
   const Eigen::BDCSVD<MatrixX<double>> svd(ju, Eigen::ComputeThinV);
   const VectorX<double> weakest = svd.matrixV().col(n - 1);
-  const double amount = target / (svd.singularValues()(n - 1) * (ju * weakest).cwiseAbs().maxCoeff() /
-                                  (ju * weakest).norm());
+  const double amount = target / (ju * weakest).cwiseAbs().maxCoeff();  // the scaled residual is max-norm
   for (Eigen::Index c = 0; c < n; ++c) q(sd.unknowns[static_cast<std::size_t>(c)]) += amount * weakest(c) * sd.col_scale(c);
 }
 

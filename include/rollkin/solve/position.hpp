@@ -2,9 +2,10 @@
 //
 // Newton-Raphson on the constraints (eqs. 6 and 3) in the unknowns (all pair variables but the drivers),
 // with the analytic Jacobian of kinematics.hpp. Rows and columns are scaled (lengths by the mechanism's
-// length scale). Redundant constraints (more equations than rank) take minimum-norm least-squares steps
-// from a rank-revealing decomposition, so consistent ones converge quadratically and inconsistent ones are
-// reported as CannotAssemble.
+// length scale). Each step solves the factorisation SolveData chose (solve_data.hpp): redundant constraints
+// (more equations than rank) on independent rows, a rank-deficient system by minimum-norm least-squares
+// steps, so consistent constraints converge quadratically and inconsistent ones are reported as
+// CannotAssemble. A converged pose whose error bound is not yet round-off takes one refining step.
 #pragma once
 
 #include "rollkin/solve/solve_data.hpp"
