@@ -4,11 +4,14 @@
 // Each sub-step predicts the pose at the new input (by default a cubic Hermite extrapolation through the
 // last two poses and their velocities), corrects it with Newton and is accepted only if Newton converged
 // and the result lies close to the tangent prediction q + qdot h compared with the tangent step itself (no
-// silent jump to another branch); otherwise the step is halved. When the step falls below min_step the motion ends
-// there: a dead point if the unknowns' Jacobian has become ill-conditioned (the limit then lies within
-// about 2 min_step of the last pose), otherwise no convergence. After every accepted step, contact
-// parameters are checked against their contours' domains (open contours) and corners (tangent
-// discontinuities, which a contact may not pass); the limit is located by bisection to min_step.
+// silent jump to another branch); otherwise the step is halved. An accepted pose takes the closing step, the
+// Newton step of its own last evaluation without evaluating again, which brings it from the residual
+// tolerance to round-off (the prediction extrapolates the last poses and would multiply their errors).
+// When the step falls below min_step the motion ends there: a dead point if the unknowns' Jacobian has
+// become ill-conditioned (the limit then lies within about 2 min_step of the last pose), otherwise no
+// convergence. After every accepted step, contact parameters are checked against their contours' domains
+// (open contours) and corners (tangent discontinuities, which a contact may not pass); the limit is located
+// by bisection to min_step.
 //
 // Singular points on the way (branches meet: bifurcations, singular cam poses). The sign of det J_u (square
 // systems, from the LU's pivots and row parity) is kept along the branch. A converged step that changes it
@@ -290,11 +293,23 @@ template <class S> class Tracer {
   }
 
   void accept() {
+    take_closing_step();
     q_prev_.swap(q_);
     v_prev_.swap(v_);
     q_.swap(trial_);
     has_prev_ = true;
     solve_velocity(m_, sd_, rate_, v_);  // sd is factored at the accepted pose
+  }
+
+  /// The closing step (file comment): sd is factored at trial_, whose Newton step from there, without a
+  /// further evaluation, takes its unknowns from up to condition x 64 eps (Newton's residual tolerance) to
+  /// round-off. Skipped where that step is not small (a pose taken at a singular point).
+  void take_closing_step() {
+    sd_.rhs = -sd_.kin.residual.cwiseProduct(sd_.row_weight);
+    sd_.solve(sd_.rhs, sd_.step);
+    const S largest = sd_.step.size() == 0 ? S(0) : S(sd_.step.cwiseAbs().maxCoeff());
+    if (!(largest <= sd_.settings.step_tolerance)) return;
+    for (std::size_t c = 0; c < m_.unknowns.size(); ++c) trial_(m_.unknowns[c]) += sd_.step(c) * sd_.col_scale(c);
   }
 
   S clamp_step(const S& remaining, const S& preferred = std::numeric_limits<S>::infinity()) const {

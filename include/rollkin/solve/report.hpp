@@ -41,7 +41,8 @@ template <class S> struct SolveReport {
   SolveStatus status = SolveStatus::NoConvergence;
   int iterations = 0;       // Newton steps taken
   int evaluations = 0;      // constraint evaluations, each with its Jacobian factorisation
-  S residual = S(0);        // max-norm of the scaled residual at the returned pose
+  S residual = S(0);        // max-norm of the scaled residual at the returned pose; in a sweep, at the pose the
+                            // closing step started from (continuation.hpp), which that Newton step only lowers
   S condition = S(0);       // condition estimate of the scaled Jacobian of the unknowns
   int rank = 0;             // numerical rank of the unknowns' Jacobian
   int equations = 0;        // number of constraint equations
