@@ -160,8 +160,7 @@ int run_check(const CheckOptions& o) {
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, run.inputs);
   g_doing = "checking the design";
   const DesignReport design = design_report(scene, sw, result);
-  std::size_t singular = 0;
-  std::vector<std::string> problems = sweep_problems(scene, sw, assembly, result, singular);
+  std::vector<std::string> problems = sweep_problems(scene, sw, summarise(result), run.inputs);
   std::size_t solved = 0;
   for (const auto& p : result.poses) solved += p.report.has_pose() ? 1 : 0;
   const std::string unit = scene.unit_label(sw.variable);

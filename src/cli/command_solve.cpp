@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace rollkin::cli {
@@ -154,31 +155,34 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   const SolveReport<double> assembly = assemble_scene(scene, sd, q);
   if (o.verbose) print_assembly(out, scene, assembly, cli::full_rank(m, sd));
   g_doing = "solving the sweep";
-  const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, inputs);
-
-  // Everything is computed before anything is written, and then written all or nothing.
-  g_doing = "building the output files";
-  const std::vector<double> file_values = io::sweep_values(sw);
-  const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, result) : cli::SweepAnalysis{};
-  const cli::OutputContext ctx{scene, sw, result, file_values, o.analysis ? &analysis : nullptr};
-  run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
-  run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
-  run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
-  run.set_output("--animate", [&] { return cli::animation_html(ctx); });
-  g_doing = "writing the output files";
-  run.outputs.commit();
+  // Only the poses' values feed the outputs, the interference check and the design check: without them the
+  // sweep keeps its summary alone (sweep_summary.hpp), no values.
+  const bool values_needed =
+      !(o.csv.empty() && o.plot.empty() && o.draw.empty() && o.animate.empty()) || o.interference || o.verbose;
+  std::optional<SweepResult<double>> result;
+  SweepSummary<double> found;
+  if (values_needed) {
+    result = sweep(m, sd, q, assembly, sw.driver, inputs);
+    found = summarise(*result);
+    // Everything is computed before anything is written, and then written all or nothing.
+    g_doing = "building the output files";
+    const std::vector<double> file_values = io::sweep_values(sw);
+    const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, *result) : cli::SweepAnalysis{};
+    const cli::OutputContext ctx{scene, sw, *result, file_values, o.analysis ? &analysis : nullptr};
+    run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
+    run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
+    run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
+    run.set_output("--animate", [&] { return cli::animation_html(ctx); });
+    g_doing = "writing the output files";
+    run.outputs.commit();
+  } else {
+    found = sweep_summary(m, sd, q, assembly, sw.driver, inputs);
+  }
   g_doing = "reporting";
 
-  std::size_t solved = 0;
-  double max_residual = 0;
-  for (const auto& p : result.poses)
-    if (p.report.ok()) {
-      ++solved;
-      max_residual = std::max(max_residual, p.report.residual);
-    }
-  std::size_t singular = 0;
-  std::vector<std::string> problems = sweep_problems(scene, sw, assembly, result, singular);
-  const std::vector<std::string> clashes = o.interference ? interference_lines(scene, sw, result) : std::vector<std::string>{};
+  const std::size_t solved = found.solved();
+  std::vector<std::string> problems = sweep_problems(scene, sw, found, inputs);
+  const std::vector<std::string> clashes = o.interference ? interference_lines(scene, sw, *result) : std::vector<std::string>{};
   problems.insert(problems.end(), clashes.begin(), clashes.end());
   if (!assembly.ok())
     for (const auto& note : osculating_contacts(m, q)) problems.push_back(note);
@@ -187,21 +191,21 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   std::ostringstream summary;
   summary << fs::path(scene.file).filename().string() << ": " << solved << "/" << inputs.size() << " poses solved, "
           << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to) << (unit.empty() ? "" : " " + unit)
-          << ", max residual " << fmt(max_residual, 2) << ", ";
+          << ", max residual " << fmt(found.max_residual, 2) << ", ";
   if (!assembly.ok()) {
     summary << "assembly failed (" << to_string(assembly.status) << ")";
-  } else if (result.limits.empty()) {
+  } else if (found.limits.empty()) {
     summary << "no limits met";
   } else {
-    summary << result.limits.size() << " limit(s) met:";
-    for (std::size_t i = 0; i < result.limits.size(); ++i)
-      summary << (i ? "," : "") << " " << to_string(result.limits[i].status) << " at "
-              << fmt(result.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
+    summary << found.limits.size() << " limit(s) met:";
+    for (std::size_t i = 0; i < found.limits.size(); ++i)
+      summary << (i ? "," : "") << " " << to_string(found.limits[i].status) << " at "
+              << fmt(found.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
   }
-  if (singular) summary << ", " << singular << " singular pose(s)";
+  if (!found.singular.empty()) summary << ", " << found.singular.size() << " singular pose(s)";
   out << summary.str() << "\n";
   if (o.verbose) {
-    const DesignReport design = design_report(scene, sw, result);
+    const DesignReport design = design_report(scene, sw, *result);
     for (const auto& l : design.section) out << l << "\n";
     for (const auto& f : design.findings) out << "  " << f << "\n";
   }

@@ -187,23 +187,20 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
   }
 }
 
-std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& assembly,
-                                        const SweepResult<double>& result, std::size_t& singular) {
+std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SweepSummary<double>& summary,
+                                        const std::vector<double>& inputs) {
   std::vector<std::string> problems;
+  const SolveReport<double>& assembly = summary.assembly;
   if (!assembly.ok())
     problems.push_back(std::string(to_string(assembly.status)) + ": assembly failed: " +
                        (assembly.detail.empty() ? "the mechanism cannot be assembled" : assembly.detail) +
                        " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
                        " unknowns, condition " + fmt(assembly.condition, 3) + ")");
-  for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
-  singular = 0;
-  for (const auto& p : result.poses)
-    if (p.report.status == SolveStatus::Singular) {
-      ++singular;
-      problems.push_back("singular: singular pose at " + input_text(scene, sw, p.input) +
-                         ": the branches meet / Jacobian singular; values follow the branch (interpolated between"
-                         " the regular poses on both sides, condition " + fmt(p.report.condition, 3) + ")");
-    }
+  for (const auto& l : summary.limits) problems.push_back(limit_line(scene, sw, l));
+  for (const auto& p : summary.singular)
+    problems.push_back("singular: singular pose at " + input_text(scene, sw, inputs[p.index]) +
+                       ": the branches meet / Jacobian singular; values follow the branch (interpolated between"
+                       " the regular poses on both sides, condition " + fmt(p.report.condition, 3) + ")");
   return problems;
 }
 

@@ -126,10 +126,10 @@ std::string input_text(const io::Scene& scene, const io::Sweep& sw, double inter
 /// One line per limit for stderr, the input in the file's units.
 std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r);
 
-/// One line per problem of a sweep: a failed assembly, each limit met, each singular pose (counted in
-/// `singular`).
-std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& assembly,
-                                        const SweepResult<double>& result, std::size_t& singular);
+/// One line per problem of a sweep: a failed assembly, each limit met, each singular pose (`inputs`: the
+/// sweep's requested inputs, internal units).
+std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SweepSummary<double>& summary,
+                                        const std::vector<double>& inputs);
 
 // ---- the design check (rollkin check, solve --verbose; src/cli/command_check.cpp) --------------------------
 

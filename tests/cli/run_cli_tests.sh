@@ -180,6 +180,11 @@ check "unsolved rows carry nan and a status" \
   $(awk -F, 'NR > 1 && $NF != "ok" { n++; if ($2 != "nan" || ($NF != "not_reached" && $NF != "dead_point" && $NF != "domain_exit")) bad = 1 }
              END { exit bad || n == 0 }' wide.csv; echo $?)
 check "solved rows in the wide sweep" $([ "$(grep -c ',ok$' wide.csv)" -gt 150 ]; echo $?)
+cp out.txt wide.out
+cp err.txt wide.err
+run solve "$EX/paper_fourbar.json" --from -70 --to 120
+check "the wide sweep without output files (its summary alone, no values kept): the same summary, limit lines, exit 1" \
+  $([ "$rc" -eq 1 ] && cmp -s out.txt wide.out && cmp -s err.txt wide.err; echo $?)
 check "--plot and --draw write SVG" $(grep -q "<svg" wide.svg && grep -q "<svg" pose.svg; echo $?)
 
 # ---- other examples -----------------------------------------------------------------------------------
@@ -449,6 +454,12 @@ nsing=$(awk -F, 'NR > 1 && $NF == "singular"' anti.csv | wc -l)
 check "singular rows: one stderr line each naming the input, exit 1 (else exit 0)" \
   $(if [ "$nsing" -gt 0 ]; then [ "$rc" -eq 1 ] && [ "$(grep -c 'singular pose at O2.theta2 = ' err.txt)" -eq "$nsing" ] &&
     grep -q "the branches meet / Jacobian singular; values follow the branch" err.txt; else [ "$rc" -eq 0 ]; fi; echo $?)
+cp out.txt anti.out
+cp err.txt anti.err
+anti_rc=$rc
+run solve "$EX/antiparallelogram.json"
+check "anti-parallelogram without output files: the same summary, singular lines in input order and exit status" \
+  $([ "$rc" -eq "$anti_rc" ] && cmp -s out.txt anti.out && cmp -s err.txt anti.err; echo $?)
 run solve "$EX/antiparallelogram.json" --from 0 --to 360 --step 0.7 --csv anti7.csv
 check "anti-parallelogram with step 0.7: every row ok and crossed (theta4 + 90 - theta2 never 0 mod 360 away from 90/270)" \
   $([ "$rc" -eq 0 ] && awk -F, 'NR > 1 { if ($NF != "ok") bad = 1; d = $4 - $1 - 90; while (d > 180) d -= 360; while (d <= -180) d += 360

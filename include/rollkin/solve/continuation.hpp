@@ -28,6 +28,7 @@
 #include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/position.hpp"
 #include "rollkin/solve/sweep_result.hpp"
+#include "rollkin/solve/sweep_summary.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -449,9 +450,11 @@ template <class Before> void nearest_first(std::vector<std::size_t>& indices, Be
     std::sort(indices.begin(), indices.end(), before);
 }
 
-/// sweep()'s continuation from the assembled pose q0 to every requested input, stored into out.
-template <class S> void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, int driver,
-                                    const std::vector<S>& inputs, const ContinuationSettings<S>& cfg, SweepResult<S>& out) {
+/// sweep()'s continuation from the assembled pose q0 to every requested input, reported into out (a
+/// SweepResult, or a SweepSummary for sweep_summary()).
+template <class S, class Out>
+void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, int driver, const std::vector<S>& inputs,
+                 const ContinuationSettings<S>& cfg, Out& out) {
   const int var = m.drivers[driver];
   // Requested inputs on each side of the assembly input, nearest first.
   std::vector<std::size_t> up, down;
@@ -496,6 +499,17 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
                      assembly.ok() ? SolveStatus::NotReached : assembly.status);
   if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
   out.zero_columns_without_values();
+  return out;
+}
+
+/// The same continuation as sweep(), keeping only what a summary reports (sweep_summary.hpp): statuses,
+/// the largest residual, limits and singular poses, no values.
+template <class S> SweepSummary<S> sweep_summary(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
+                                                 const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
+                                                 const ContinuationSettings<S>& cfg = {}) {
+  SweepSummary<S> out(assembly, inputs.size(), assembly.ok() ? SolveStatus::NotReached : assembly.status);
+  if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
+  out.sort_singular();
   return out;
 }
 
