@@ -5,7 +5,8 @@
 //   - library: rollkin::sweep() on the scene as `rollkin solve` reads it, in process (assembly excluded);
 //   - cli: `rollkin solve examples/paper_fourbar.json --from -50 --to 100 --step 0.001` as a child process,
 //     without output and with --csv FILE (wall time from spawn to exit, everything included: start-up,
-//     scene, assembly, sweep, output), and the child's peak resident memory (wait4's ru_maxrss);
+//     scene, assembly, sweep, output), and the child's peak resident memory (wait4's ru_maxrss), children
+//     spawned by a small process forked at start-up (Spawner);
 //   - jobs: eight copies of the scene in one `rollkin solve s1.json ... s8.json --step 0.005` run with --jobs 1
 //     and with --jobs <cores> (wall time; the speed-up against the target >= 0.8 x cores);
 //   - scipy: bench/scipy_paper.py (fsolve with quad arc lengths) with /usr/bin/python3, fewer poses (it takes
@@ -28,6 +29,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -85,6 +87,85 @@ Child run_child(const std::vector<std::string>& args) {
   return c;
 }
 
+bool write_all(int fd, const void* data, std::size_t n) {
+  const char* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t w = write(fd, p, n);
+    if (w <= 0) return false;
+    p += w;
+    n -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+bool read_all(int fd, void* data, std::size_t n) {
+  char* p = static_cast<char*>(data);
+  while (n > 0) {
+    const ssize_t r = read(fd, p, n);
+    if (r <= 0) return false;
+    p += r;
+    n -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+/// Runs the timed children from a small process forked at start-up. Linux carries a process's peak memory
+/// over exec, and a spawned child starts with its parent's (ru_maxrss): spawned from this benchmark, whose
+/// library sweep has held 20 MB and more, every child would read at least that.
+class Spawner {
+ public:
+  Spawner() {
+    int request[2], reply[2];
+    if (pipe(request) != 0 || pipe(reply) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      close(request[1]);
+      close(reply[0]);
+      serve(request[0], reply[1]);
+      _exit(0);
+    }
+    close(request[0]);
+    close(reply[1]);
+    to_ = request[1];
+    from_ = reply[0];
+  }
+  ~Spawner() {
+    close(to_);
+    close(from_);
+    if (pid_ > 0) waitpid(pid_, nullptr, 0);
+  }
+  Spawner(const Spawner&) = delete;
+  Spawner& operator=(const Spawner&) = delete;
+
+  /// run_child(args) in the small process.
+  Child run(const std::vector<std::string>& args) const {
+    std::string message;
+    for (const auto& a : args) message.append(a).push_back('\0');
+    const std::uint64_t n = message.size();
+    Child c;
+    if (pid_ <= 0 || !write_all(to_, &n, sizeof n) || !write_all(to_, message.data(), n) || !read_all(from_, &c, sizeof c))
+      c.status = -1;
+    return c;
+  }
+
+ private:
+  static void serve(int in, int out) {
+    std::uint64_t n = 0;
+    while (read_all(in, &n, sizeof n)) {
+      std::string message(n, '\0');
+      if (!read_all(in, message.data(), n)) return;
+      std::vector<std::string> args;
+      for (std::size_t begin = 0, end; begin < message.size(); begin = end + 1) {
+        end = message.find('\0', begin);
+        args.push_back(message.substr(begin, end - begin));
+      }
+      const Child c = run_child(args);
+      if (!write_all(out, &c, sizeof c)) return;
+    }
+  }
+  pid_t pid_ = -1;
+  int to_ = -1, from_ = -1;
+};
+
 /// The SciPy baseline's us per pose (its own median over its repeats), or a negative number on failure.
 double scipy_us_per_pose(const std::string& script, int poses, std::string& check) {
   const std::string cmd = "/usr/bin/python3 " + script + " --poses " + std::to_string(poses) + " --step " +
@@ -113,6 +194,7 @@ int main(int argc, char** argv) {
   app.add_option("--scipy-poses", scipy_poses, "poses of the SciPy sweep over the same range")->check(CLI::Range(2, 150001));
   app.add_flag("--no-scipy", no_scipy, "skip the SciPy baseline");
   CLI11_PARSE(app, argc, argv);
+  const Spawner spawner;  // before anything large is allocated here
   if (rollkin == "rollkin") rollkin = (std::string(argv[0]).find('/') == std::string::npos ? std::string(".")
                                         : std::string(argv[0]).substr(0, std::string(argv[0]).rfind('/'))) + "/rollkin";
   const std::string scene_file = source + "/examples/paper_fourbar.json";
@@ -156,8 +238,8 @@ int main(int argc, char** argv) {
         worst_phi = std::max(worst_phi, std::abs(hand_out[static_cast<std::size_t>(k)].phi - res.q(static_cast<std::size_t>(k))(5)));
     }
 
-    const Child a = run_child(plain);
-    const Child b = run_child(with_csv);
+    const Child a = spawner.run(plain);
+    const Child b = spawner.run(with_csv);
     bad_status += (a.status != 0) + (b.status != 0);
     cli.push_back(a.seconds / kPoses * 1e6);
     rss.push_back(a.max_rss_mb);
@@ -183,7 +265,7 @@ int main(int argc, char** argv) {
   all_jobs.push_back(std::to_string(cores));
   std::vector<double> jobs1, jobs_all;
   for (int r = 0; r < repeats; ++r) {
-    const Child a = run_child(one_job), b = run_child(all_jobs);
+    const Child a = spawner.run(one_job), b = spawner.run(all_jobs);
     bad_status += (a.status != 0) + (b.status != 0);
     jobs1.push_back(a.seconds);
     jobs_all.push_back(b.seconds);
