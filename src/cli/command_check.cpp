@@ -160,9 +160,9 @@ int run_check(const CheckOptions& o) {
   const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, run.inputs);
   g_doing = "checking the design";
   const DesignReport design = design_report(scene, sw, result);
-  std::vector<std::string> problems = sweep_problems(scene, sw, summarise(result), run.inputs);
-  std::size_t solved = 0;
-  for (const auto& p : result.poses) solved += p.report.has_pose() ? 1 : 0;
+  const SweepSummary<double> found = summarise(result);
+  std::vector<std::string> problems = sweep_problems(scene, sw, found, run.inputs);
+  const std::size_t solved = found.solved() + found.singular.size();  // every pose with values
   const std::string unit = scene.unit_label(sw.variable);
   std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << run.inputs.size()
             << " poses solved, " << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to)

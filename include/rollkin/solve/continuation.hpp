@@ -306,11 +306,7 @@ template <class S> class Tracer {
   /// further evaluation, takes its unknowns from up to condition x 64 eps (Newton's residual tolerance) to
   /// round-off. Skipped where that step is not small (a pose taken at a singular point).
   void take_closing_step() {
-    sd_.rhs = -sd_.kin.residual.cwiseProduct(sd_.row_weight);
-    sd_.solve(sd_.rhs, sd_.step);
-    const S largest = sd_.step.size() == 0 ? S(0) : S(sd_.step.cwiseAbs().maxCoeff());
-    if (!(largest <= sd_.settings.step_tolerance)) return;
-    for (std::size_t c = 0; c < m_.unknowns.size(); ++c) trial_(m_.unknowns[c]) += sd_.step(c) * sd_.col_scale(c);
+    if (newton_step(sd_, m_.equation_count()) <= sd_.settings.step_tolerance) add_step(m_, trial_, sd_);
   }
 
   S clamp_step(const S& remaining, const S& preferred = std::numeric_limits<S>::infinity()) const {

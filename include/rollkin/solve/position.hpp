@@ -33,12 +33,25 @@ template <class S> bool worth_refining(const SolveData<S>& sd, const SolveReport
          sd.condition * epsilon<S>() <= limit;
 }
 
+/// The Newton step of the first `rows` equations at the pose sd is evaluated and factored at, into sd.step
+/// (scaled); returns its largest entry (NaN where the Jacobian broke down).
+template <class S> S newton_step(SolveData<S>& sd, int rows) {
+  sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseProduct(sd.row_weight.head(rows));
+  sd.solve(sd.rhs.head(rows), sd.step);
+  return sd.step.size() == 0 ? S(0) : S(sd.step.cwiseAbs().maxCoeff());
+}
+
+/// q += sign x sd.step, unscaled.
+template <class S> void add_step(const Mechanism<S>& m, VectorX<S>& q, const SolveData<S>& sd, int sign = 1) {
+  for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += S(sign) * sd.step(c) * sd.col_scale(c);
+}
+
 /// The refining step did not lower the residual: back to the pose it started from (q minus the step),
 /// factored again there, with its report.
 template <class S>
 SolveReport<S> undo_refining_step(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd, int rows,
                                   SolveReport<S> rep, int evaluations) {
-  for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) -= sd.step(c) * sd.col_scale(c);
+  add_step(m, q, sd, -1);
   evaluate_and_factor(m, q, sd, rows);
   rep.evaluations = evaluations;
   return rep;
@@ -89,11 +102,9 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     }
     residual_before = residual_last;
     residual_last = rep.residual;
-    sd.rhs.head(rows) = -sd.kin.residual.head(rows).cwiseProduct(sd.row_weight.head(rows));
-    sd.solve(sd.rhs.head(rows), sd.step);
-    last_step = sd.step.size() == 0 ? S(0) : S(sd.step.cwiseAbs().maxCoeff());
+    last_step = detail::newton_step(sd, rows);
     if (!(last_step == last_step)) break;  // NaN: the Jacobian broke down
-    for (std::size_t c = 0; c < m.unknowns.size(); ++c) q(m.unknowns[c]) += sd.step(c) * sd.col_scale(c);
+    detail::add_step(m, q, sd);
   }
   const bool inconsistent = rep.residual > cfg.consistency_tolerance && (stagnant || last_step <= cfg.step_tolerance);
   rep.status = inconsistent ? SolveStatus::CannotAssemble : SolveStatus::NoConvergence;
