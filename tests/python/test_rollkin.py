@@ -344,13 +344,21 @@ def test_solve_many_releases_the_gil():
         while not stop.is_set():
             counter[0] += 1
 
+    # A batch of about half a second on this machine, sized from one scene's solve (a fixed batch became too
+    # short to tell once the solver got faster).
+    scenes = variants()
+    t0 = time.monotonic()
+    scenes[0].solve(-50, 100, 0.01)
+    per_scene = time.monotonic() - t0
+    copies = max(len(scenes), int(math.ceil(0.5 / max(per_scene, 1e-4))))
+    batch = (scenes * copies)[:copies]
     t = threading.Thread(target=count)
     t.start()
     try:
         time.sleep(0.05)
         before = counter[0]
         start = time.monotonic()
-        rollkin.solve_many(variants(), -50, 100, 0.01, threads=1)
+        rollkin.solve_many(batch, -50, 100, 0.01, threads=1)
         elapsed = time.monotonic() - start
         during = counter[0] - before
     finally:
