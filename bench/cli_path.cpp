@@ -4,7 +4,8 @@
 //     lengths), in process;
 //   - library: rollkin::sweep() on the scene as `rollkin solve` reads it, in process (assembly excluded);
 //   - cli: `rollkin solve examples/paper_fourbar.json --from -50 --to 100 --step 0.001` as a child process,
-//     without output and with --csv FILE (wall time from spawn to exit, everything included: start-up,
+//     without output and with --csv FILE (its rows formatted on all cores, the default, and with --jobs 1)
+//     (wall time from spawn to exit, everything included: start-up,
 //     scene, assembly, sweep, output), and the child's peak resident memory (wait4's ru_maxrss), children
 //     spawned by a small process forked at start-up (Spawner);
 //   - jobs: eight copies of the scene in one `rollkin solve s1.json ... s8.json --step 0.005` run with --jobs 1
@@ -203,6 +204,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> with_csv = plain;
   with_csv.push_back("--csv");
   with_csv.push_back(csv);
+  std::vector<std::string> csv_one_thread = with_csv;  // the rows formatted by one thread (--jobs 1)
+  csv_one_thread.push_back("--jobs");
+  csv_one_thread.push_back("1");
 
   // The library on the scene as the CLI reads it.
   using namespace rollkin;
@@ -217,7 +221,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  std::vector<double> hand, lib, cli, cli_csv, rss, rss_csv;
+  std::vector<double> hand, lib, cli, cli_csv, cli_csv1, rss, rss_csv, rss_csv1;
   std::vector<hand_paper::Unknowns> hand_out;
   long hand_iterations = 0;
   double worst_phi = 0;
@@ -240,11 +244,14 @@ int main(int argc, char** argv) {
 
     const Child a = spawner.run(plain);
     const Child b = spawner.run(with_csv);
-    bad_status += (a.status != 0) + (b.status != 0);
+    const Child c = spawner.run(csv_one_thread);
+    bad_status += (a.status != 0) + (b.status != 0) + (c.status != 0);
     cli.push_back(a.seconds / kPoses * 1e6);
     rss.push_back(a.max_rss_mb);
     cli_csv.push_back(b.seconds / kPoses * 1e6);
     rss_csv.push_back(b.max_rss_mb);
+    cli_csv1.push_back(c.seconds / kPoses * 1e6);
+    rss_csv1.push_back(c.max_rss_mb);
   }
   std::remove(csv.c_str());
 
@@ -291,8 +298,9 @@ int main(int argc, char** argv) {
   row("library sweep()", lib, nullptr, "");
   row("rollkin solve, no output", cli, &rss,
       std::string(verdict(median(cli) <= 1.0 * h)) + " time (<= 1.0x), " + verdict(median(rss) < 40) + " memory (< 40 MB)");
-  row("rollkin solve --csv", cli_csv, &rss_csv,
+  row("rollkin solve --csv (rows formatted on all cores)", cli_csv, &rss_csv,
       std::string(verdict(median(cli_csv) <= 2.5 * h)) + " time (<= 2.5x), " + verdict(median(rss_csv) < 40) + " memory (< 40 MB)");
+  row("rollkin solve --csv --jobs 1", cli_csv1, &rss_csv1, verdict(median(rss_csv1) < 40) + std::string(" memory (< 40 MB)"));
   if (scipy > 0)
     std::printf("| SciPy fsolve + quad (%d poses, phi(-50) = %s deg) | %.1f | %.0f | | |\n", scipy_poses, scipy_check.c_str(),
                 scipy, scipy / h);

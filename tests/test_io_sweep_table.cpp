@@ -61,3 +61,34 @@ BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
   BOOST_TEST(r == result.size());
   BOOST_TEST(checked == r * table.names.size());
 }
+
+// Several threads format the rows in blocks (write_sweep_csv's `threads`); the file must be the same bytes in
+// the same row order. 12,001 rows with a limit inside: several rounds of 2048-row blocks, the last one short,
+// not_reached rows among them.
+BOOST_AUTO_TEST_CASE(csv_formatted_by_several_threads_is_the_same_file) {
+  const io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
+  io::Sweep sw = *scene.sweep;
+  sw.from = -50;
+  sw.to = 130;
+  sw.step = 0.015;
+  const std::vector<double> inputs = io::sweep_inputs(sw), values = io::sweep_values(sw);
+  BOOST_TEST_REQUIRE(inputs.size() == 12001u);
+  SolveData<double> sd(scene.mechanism);
+  VectorX<double> q = scene.guess;
+  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+  BOOST_TEST_REQUIRE(assembly.ok());
+  const SweepResult<double> result = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
+  BOOST_TEST_REQUIRE(result.limits.size() == 1u);
+  BOOST_TEST_REQUIRE(!result.has_pose(inputs.size() - 1));  // rows past the dead point
+  const io::SweepOutput out{scene, sw, result, values};
+  const std::string expected = io::sweep_table(out, /*rates=*/true).csv();
+  for (int threads : {2, 3, 0}) {
+    const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / ("threads" + std::to_string(threads) + ".csv");
+    io::OutputSet set;
+    set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, true, sink, threads); });
+    set.commit();
+    const std::string text = testing::read_text(file);
+    BOOST_TEST(text.size() == expected.size(), "threads " << threads);
+    BOOST_TEST((text == expected), "threads " << threads << ": not the bytes of the one-thread table");
+  }
+}

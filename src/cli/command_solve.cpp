@@ -94,7 +94,7 @@ struct SolveOptions {
   std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
   std::string csv, plot, draw, animate;
   bool rates = false, analysis = false, verbose = false, interference = false;
-  int jobs = 0;  // scenes solved at once (0: one per core)
+  int jobs = 0;  // scenes solved at once, or with one scene the threads that format its CSV (0: one per core)
 };
 
 int run_solve(const SolveOptions& o);
@@ -118,7 +118,9 @@ Command solve_command(CLI::App& rollkin) {
                 "print the assembly report, how imported contours were converted and the design check (as 'rollkin check')");
   app->add_flag("--interference", o->interference,
                 "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
-  app->add_option("-j,--jobs", o->jobs, "with several scenes: how many are solved at once (default 0: one per core)")
+  app->add_option("-j,--jobs", o->jobs,
+                  "with several scenes: how many are solved at once; with one: how many threads format its --csv "
+                  "(default 0: one per core)")
       ->type_name("N")
       ->check(number("a number of scenes at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
   app->footer(
@@ -169,7 +171,7 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
     const std::vector<double> file_values = io::sweep_values(sw);
     const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, *result) : cli::SweepAnalysis{};
     const cli::OutputContext ctx{scene, sw, *result, file_values, o.analysis ? &analysis : nullptr};
-    run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink); });
+    run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink, o.jobs); });
     run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
     run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
     run.set_output("--animate", [&] { return cli::animation_html(ctx); });
@@ -226,6 +228,7 @@ std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
       throw UsageError("scenes '" + at->second + "' and '" + file + "' have the same name \"" + stem +
                        "\": their output files ({scene}) would be the same; rename one");
     SolveOptions one = o;
+    one.jobs = 1;  // the scenes share the threads: each formats its own CSV on the thread that solved it
     one.scenes = {file};
     one.sweep.scene = file;
     for (auto [option, path] : {std::pair{"--csv", &one.csv}, {"--plot", &one.plot}, {"--draw", &one.draw},

@@ -3,7 +3,10 @@
 #include "rollkin/io/sweep_table.hpp"
 
 #include "rollkin/io/csv.hpp"
+#include "rollkin/solve/batch.hpp"
 
+#include <algorithm>
+#include <future>
 #include <limits>
 #include <stdexcept>
 
@@ -117,6 +120,26 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
   row.push_back(ok ? res.report(r).residual : kNaN);
 }
 
+/// What the rows of one CSV table share.
+struct CsvRows {
+  const SweepOutput& out;
+  bool rates;
+  const std::vector<int>& others;
+  std::size_t columns;
+};
+
+/// Rows are formatted in blocks of this many (about a quarter of a megabyte of text) when several threads share the
+/// work (write_sweep_csv).
+constexpr std::size_t kRowsPerBlock = 1024;
+
+/// Row r of the table as a CSV line appended to `text`.
+void append_table_row(const CsvRows& t, std::size_t r, RowWork& w, std::string& text) {
+  row_values(t.out, t.rates, t.others, r, w);
+  if (w.row.size() != t.columns) throw std::logic_error("write_sweep_csv: a row's values do not match its columns");
+  const std::string status = to_string(t.out.result.status(r));
+  append_csv_row(text, w.row.data(), w.row.size(), &status);
+}
+
 }  // namespace
 
 double output_scale(const Mechanism<double>& m, int var) {
@@ -172,19 +195,54 @@ SweepTable sweep_table(const SweepOutput& out, bool rates) {
   return t;
 }
 
-void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink) {
+void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int threads) {
   std::vector<int> others;
   const std::vector<std::string> names = column_names(out, rates, others);
-  const std::string status_name = SweepTable().status_name;
-  append_csv_header(sink.buffer(), names, status_name);
-  RowWork w(out.scene.mechanism);
-  std::string status;
-  for (std::size_t r = 0; r < out.result.size(); ++r) {
-    row_values(out, rates, others, r, w);
-    if (w.row.size() != names.size()) throw std::logic_error("write_sweep_csv: a row's values do not match its columns");
-    status = to_string(out.result.status(r));
-    append_csv_row(sink.buffer(), w.row.data(), w.row.size(), &status);
-    sink.flush_full();
+  append_csv_header(sink.buffer(), names, SweepTable().status_name);
+  const CsvRows table{out, rates, others, names.size()};
+  const std::size_t rows = out.result.size();
+  const std::size_t workers = batch_workers((rows + kRowsPerBlock - 1) / kRowsPerBlock, threads);
+  if (workers <= 1) {
+    RowWork w(out.scene.mechanism);
+    for (std::size_t r = 0; r < rows; ++r) {
+      append_table_row(table, r, w, sink.buffer());
+      sink.flush_full();
+    }
+    return;
+  }
+  // Each round, `workers` threads format one block of rows each while this thread writes the previous
+  // round's blocks in row order: two rounds of text are held, whatever the table's size. Each thread's row
+  // buffers and text sit on cache lines of their own (appending to neighbouring strings would share them).
+  struct alignas(64) Worker {
+    explicit Worker(const Mechanism<double>& m) : work(m) {}
+    RowWork work;
+    std::string text;
+  };
+  const std::size_t per_round = workers * kRowsPerBlock;
+  std::vector<Worker> worker;
+  worker.reserve(workers);
+  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out.scene.mechanism);
+  std::vector<std::string> ready(workers);
+  std::vector<std::future<void>> running;  // declared last: destroyed (waited for) before what it uses
+  const auto start_round = [&](std::size_t first) {
+    running.clear();
+    for (std::size_t b = 0; b < workers; ++b) {
+      const std::size_t lo = std::min(rows, first + b * kRowsPerBlock), hi = std::min(rows, lo + kRowsPerBlock);
+      running.push_back(std::async(std::launch::async, [&table, &w = worker[b], lo, hi] {
+        w.text.clear();
+        for (std::size_t r = lo; r < hi; ++r) append_table_row(table, r, w.work, w.text);
+      }));
+    }
+  };
+  start_round(0);
+  for (std::size_t first = 0; first < rows; first += per_round) {
+    for (auto& f : running) f.get();  // a worker's exception is thrown here
+    for (std::size_t b = 0; b < workers; ++b) ready[b].swap(worker[b].text);
+    if (first + per_round < rows) start_round(first + per_round);
+    for (const std::string& block : ready) {
+      sink.buffer() += block;
+      sink.flush_full();
+    }
   }
 }
 

@@ -280,6 +280,15 @@ check "several scenes, an output that is one of the scenes: exit 2, the scene un
   $([ "$rc" -eq 2 ] && [ "$(cksum < jobs/cycloid.json)" = "$before" ] && [ ! -e jobs/paper_fourbar.json ]; echo $?)
 run solve "$EX/paper_fourbar.json" "$EX/cycloid.json" --jobs -1
 check "--jobs -1: exit 2, names the option" $([ "$rc" -eq 2 ] && grep -q -- "--jobs" err.txt; echo $?)
+# One scene: --jobs is the number of threads that format its CSV rows (in blocks of 1024); the file is the
+# same bytes with any number, here past a dead point (not_reached rows) and over several blocks.
+for j in 1 3; do
+  run solve "$EX/paper_fourbar.json" --from -50 --to 130 --step 0.02 --rates --csv "jobs/threads_$j.csv" --jobs "$j"
+  cp err.txt "jobs/threads_$j.err"
+done
+check "one scene, --csv with --jobs 3 and --jobs 1: the same file (9,001 rows), exit 1 for the dead point" \
+  $([ "$rc" -eq 1 ] && [ "$(awk 'END { print NR - 1 }' jobs/threads_3.csv)" -eq 9001 ] &&
+    cmp -s jobs/threads_1.csv jobs/threads_3.csv && cmp -s jobs/threads_1.err jobs/threads_3.err; echo $?)
 
 # ---- reference: the same sweep in MPFR ---------------------------------------------------------------
 run reference "$EX/paper_fourbar.json" --from -50 --to 100 --step 25 --csv ref.csv

@@ -72,7 +72,9 @@ struct SweepTable {
 SweepTable sweep_table(const SweepOutput& out, bool rates);
 
 /// The same table as CSV text (SweepTable::csv(), identical bytes) streamed row by row into `sink` (the
-/// CLI's --csv): no column of the table is held in memory.
-void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink);
+/// CLI's --csv): no column of the table is held in memory. With `threads` other than 1 (0: one per core) the
+/// rows are formatted by that many threads, a block of rows each at a time, and written in row order: the
+/// same bytes, with at most two blocks per thread of text held.
+void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int threads = 1);
 
 }  // namespace rollkin::io
