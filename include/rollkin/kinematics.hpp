@@ -168,7 +168,13 @@ template <class S> void loop_constraints(const Mechanism<S>& m, const std::vecto
     const Pair<S>& p = m.pairs[e.pair];
     for (int j = 0; j < p.variable_count(); ++j) {
       const int v = p.first_variable + j;
-      d.jacobian.template block<3, 1>(row, v) += residual_rate(left, d.spatial[static_cast<std::size_t>(v)]);
+      // Entry by entry: as a 3-vector block, GCC packs the rate's scalars through memory and the load that
+      // follows stalls on them (store forwarding).
+      const Vec3<S> rate = residual_rate(left, d.spatial[static_cast<std::size_t>(v)]);
+      S* column = &d.jacobian.coeffRef(row, v);
+      column[0] += rate.x();
+      column[1] += rate.y();
+      column[2] += rate.z();
     }
   }
 }

@@ -23,7 +23,8 @@ template <class S> class SmallLU {
  public:
   using Vector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 
-  explicit SmallLU(Eigen::Index n = 0) : n_(n), lu_(static_cast<std::size_t>(n * n)), row_(static_cast<std::size_t>(n)) {}
+  explicit SmallLU(Eigen::Index n = 0)
+      : n_(n), lu_(static_cast<std::size_t>(n * n)), inverse_pivot_(static_cast<std::size_t>(n)), row_(static_cast<std::size_t>(n)) {}
 
   /// Factors P A = L U in a row-major buffer; pivoting permutes row indices, not the data.
   /// Returns false if a pivot is exactly zero (then solve() must not be used). `a` is anything with a(i, j):
@@ -113,6 +114,7 @@ template <class S> class SmallLU {
       std::swap(row[p], row[k]);
       const S* pivot_row = lu + row[k] * n;
       const S inv = S(1) / pivot_row[k];
+      inverse_pivot_[static_cast<std::size_t>(k)] = inv;
       ROLLKIN_UNROLL
       for (Eigen::Index i = k + 1; i < n; ++i) {
         S* r = lu + row[i] * n;
@@ -125,11 +127,13 @@ template <class S> class SmallLU {
     return true;
   }
 
-  /// L y = P b by forward substitution, then U x = y by back substitution (Golub & Van Loan, 3.1).
+  /// L y = P b by forward substitution, then U x = y by back substitution (Golub & Van Loan, 3.1), multiplying
+  /// by the pivots' reciprocals kept from compute(): a chain of dependent divisions was most of a solve.
   template <int N, class B> void solve_n(const B& b, Vector& x) const {
     const Eigen::Index n = dim<N>();
     const S* lu = lu_.data();
     const Eigen::Index* row = row_.data();
+    const S* inverse_pivot = inverse_pivot_.data();
     S* xs = x.data();
     ROLLKIN_UNROLL
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -145,12 +149,13 @@ template <class S> class SmallLU {
       S sum = xs[i];
       ROLLKIN_UNROLL
       for (Eigen::Index j = i + 1; j < n; ++j) sum -= r[j] * xs[j];
-      xs[i] = sum / r[i];
+      xs[i] = sum * inverse_pivot[i];
     }
   }
 
   Eigen::Index n_;
   std::vector<S> lu_;                 // row-major n x n: L below the diagonal (unit diagonal implied), U on and above
+  std::vector<S> inverse_pivot_;      // 1 / u_kk
   std::vector<Eigen::Index> row_;     // row_[k]: the stored row that is the k-th row of P A
   S largest_pivot_ = S(0), smallest_pivot_ = S(0);
   bool odd_swaps_ = false;            // parity of the row permutation P
