@@ -128,8 +128,8 @@ struct CsvRows {
   std::size_t columns;
 };
 
-/// Rows are formatted in blocks of this many (about a quarter of a megabyte of text) when several threads share the
-/// work (write_sweep_csv).
+/// Rows are formatted in blocks of this many (about a quarter of a megabyte of text) when several threads
+/// share the work (write_sweep_csv).
 constexpr std::size_t kRowsPerBlock = 1024;
 
 /// Row r of the table as a CSV line appended to `text`.
