@@ -15,20 +15,44 @@
 
 using namespace rollkin;
 
+namespace {
+
+/// The paper example swept from -50 to `to` degrees by `step`, past its dead point (one limit, then
+/// not_reached rows with NaN).
+struct PaperSweep {
+  io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
+  io::Sweep sw;
+  std::vector<double> inputs, values;
+  SweepResult<double> result;
+
+  PaperSweep(double to, double step) : sw(*scene.sweep), result(solve(to, step)) {}
+
+ private:
+  SweepResult<double> solve(double to, double step) {
+    sw.from = -50;
+    sw.to = to;
+    sw.step = step;
+    inputs = io::sweep_inputs(sw);
+    values = io::sweep_values(sw);
+    SolveData<double> sd(scene.mechanism);
+    VectorX<double> q = scene.guess;
+    const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+    BOOST_TEST_REQUIRE(assembly.ok());
+    SweepResult<double> r = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
+    BOOST_TEST_REQUIRE(r.limits.size() == 1u);
+    BOOST_TEST_REQUIRE(!r.has_pose(inputs.size() - 1));
+    return r;
+  }
+};
+
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
-  const io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
-  io::Sweep sw = *scene.sweep;
-  sw.from = -50;
-  sw.to = 110;  // beyond the dead point: not_reached rows with NaN too
-  sw.step = 0.25;
-  const std::vector<double> inputs = io::sweep_inputs(sw), values = io::sweep_values(sw);
-  SolveData<double> sd(scene.mechanism);
-  VectorX<double> q = scene.guess;
-  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
-  BOOST_TEST_REQUIRE(assembly.ok());
-  const SweepResult<double> result = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
-  BOOST_TEST_REQUIRE(result.limits.size() == 1u);
-  const io::SweepOutput out{scene, sw, result, values};
+  const PaperSweep paper(110, 0.25);
+  const io::Scene& scene = paper.scene;
+  const std::vector<double>& values = paper.values;
+  const SweepResult<double>& result = paper.result;
+  const io::SweepOutput out{scene, paper.sw, result, values};
   const io::SweepTable table = io::sweep_table(out, /*rates=*/true);
 
   const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / "paper.csv";
@@ -63,24 +87,12 @@ BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
 }
 
 // Several threads format the rows in blocks (write_sweep_csv's `threads`); the file must be the same bytes in
-// the same row order. 12,001 rows with a limit inside: several rounds of 2048-row blocks, the last one short,
+// the same row order. 12,001 rows with a limit inside: several rounds of 1024-row blocks, the last one short,
 // not_reached rows among them.
 BOOST_AUTO_TEST_CASE(csv_formatted_by_several_threads_is_the_same_file) {
-  const io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
-  io::Sweep sw = *scene.sweep;
-  sw.from = -50;
-  sw.to = 130;
-  sw.step = 0.015;
-  const std::vector<double> inputs = io::sweep_inputs(sw), values = io::sweep_values(sw);
-  BOOST_TEST_REQUIRE(inputs.size() == 12001u);
-  SolveData<double> sd(scene.mechanism);
-  VectorX<double> q = scene.guess;
-  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
-  BOOST_TEST_REQUIRE(assembly.ok());
-  const SweepResult<double> result = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
-  BOOST_TEST_REQUIRE(result.limits.size() == 1u);
-  BOOST_TEST_REQUIRE(!result.has_pose(inputs.size() - 1));  // rows past the dead point
-  const io::SweepOutput out{scene, sw, result, values};
+  const PaperSweep paper(130, 0.015);
+  BOOST_TEST_REQUIRE(paper.inputs.size() == 12001u);
+  const io::SweepOutput out{paper.scene, paper.sw, paper.result, paper.values};
   const std::string expected = io::sweep_table(out, /*rates=*/true).csv();
   for (int threads : {2, 3, 0}) {
     const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / ("threads" + std::to_string(threads) + ".csv");
