@@ -122,7 +122,7 @@ Command solve_command(CLI::App& rollkin) {
                   "with several scenes: how many are solved at once; with one: how many threads format its --csv "
                   "(default 0: one per core)")
       ->type_name("N")
-      ->check(number("a number of scenes at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
+      ->check(number("a number of scenes or threads at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
   app->footer(
       "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
       "--step override it), following one branch in both directions from the assembly pose.\n"
