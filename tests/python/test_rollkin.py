@@ -336,6 +336,17 @@ def test_a_variant_that_cannot_assemble_does_not_stop_the_batch():
             assert_tables_equal(r, s.solve(-50, 100, 1))
 
 
+def batch_lasting(seconds, step, at_least):
+    """Copies of variants() (at least `at_least`) that take about `seconds` on one core to sweep from -50 to 100
+    by `step`, sized from one scene's measured solve on this machine."""
+    scenes = variants()
+    t0 = time.monotonic()
+    scenes[0].solve(-50, 100, step)
+    per_scene = max(time.monotonic() - t0, 1e-4)
+    copies = max(at_least, int(math.ceil(seconds / per_scene)))
+    return (scenes * copies)[:copies]
+
+
 def test_solve_many_releases_the_gil():
     counter = [0]
     stop = threading.Event()
@@ -344,14 +355,8 @@ def test_solve_many_releases_the_gil():
         while not stop.is_set():
             counter[0] += 1
 
-    # A batch of about half a second on this machine, sized from one scene's solve (a fixed batch became too
-    # short to tell once the solver got faster).
-    scenes = variants()
-    t0 = time.monotonic()
-    scenes[0].solve(-50, 100, 0.01)
-    per_scene = time.monotonic() - t0
-    copies = max(len(scenes), int(math.ceil(0.5 / max(per_scene, 1e-4))))
-    batch = (scenes * copies)[:copies]
+    # About half a second of work (a fixed batch became too short to tell once the solver got faster).
+    batch = batch_lasting(0.5, 0.01, at_least=6)  # every variant at least once
     t = threading.Thread(target=count)
     t.start()
     try:
@@ -369,12 +374,7 @@ def test_solve_many_releases_the_gil():
 
 
 def test_ctrl_c_during_a_long_solve_many_returns_within_a_second():
-    scenes = variants()
-    t0 = time.monotonic()
-    scenes[0].solve(-50, 100, 0.002)
-    per_scene = time.monotonic() - t0
-    copies = max(8, int(math.ceil(20.0 / max(per_scene, 1e-3))))  # about 20 s of work on one core
-    batch = (scenes * copies)[:copies]
+    batch = batch_lasting(20.0, 0.002, at_least=8)  # about 20 s of work on one core
     sent = []
 
     def interrupt():
@@ -392,7 +392,7 @@ def test_ctrl_c_during_a_long_solve_many_returns_within_a_second():
     assert sent, "the batch ended before the interrupt"
     assert returned - sent[0] < 1.0, "returned %.3f s after Ctrl-C" % (returned - sent[0])
     # The module works again afterwards.
-    assert set(scenes[0].solve(-50, 100, 10)["status"]) == {"ok"}
+    assert set(batch[0].solve(-50, 100, 10)["status"]) == {"ok"}
 
 
 def test_ctrl_c_during_a_long_single_solve():
