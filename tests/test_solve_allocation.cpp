@@ -1,7 +1,8 @@
 // Memory of a sweep (issue 15): a sweep's results are columns sized once (solve/sweep_result.hpp), so the
 // per-pose work allocates nothing. Counted with a replacement of the global operator new in this test
 // executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of the same
-// range that reaches the dead point at the end of the paper example's motion) must not grow with the poses.
+// range that reaches the dead point at the end of the paper example's motion) must not grow with the poses;
+// nor those of a summary whose poses are interpolated between strides (dense output).
 #define BOOST_TEST_MODULE solve_allocation
 #include <boost/test/unit_test.hpp>
 
@@ -78,6 +79,30 @@ BOOST_AUTO_TEST_CASE(per_pose_work_allocates_nothing) {
   BOOST_TEST(many.allocations == few.allocations);
   // The values are stored: pose 999 is theta2 = 90 degrees, solved.
   BOOST_TEST(many.result.q(999)(0) == 90 * pi<double>() / 180);
+}
+
+BOOST_AUTO_TEST_CASE(interpolated_poses_allocate_nothing) {
+  // sweep_summary() on grids of 0.013 and 0.0013 degrees: most poses interpolated between strides (dense
+  // output, solve/continuation.hpp); only the per-pose status vector grows, allocated once either way.
+  const Fixture<double> f = paper_fourbar<double>();
+  long allocations[2];
+  std::size_t interpolated[2];
+  const int sizes[2] = {10000, 100000};
+  for (int i = 0; i < 2; ++i) {
+    const std::vector<double> inputs = grid(sizes[i], -40, 90);
+    SolveData<double> sd(f.mech);
+    VectorX<double> q;
+    const SolveReport<double> assembly = assemble_fixture(f, q, sd);
+    const long before = g_allocations.load();
+    const SweepSummary<double> s = sweep_summary(f.mech, sd, q, assembly, 0, inputs);
+    allocations[i] = g_allocations.load() - before;
+    interpolated[i] = s.interpolated;
+    BOOST_TEST(s.solved() == inputs.size());
+  }
+  BOOST_TEST_MESSAGE("summary allocations: 10^4 poses " << allocations[0] << " (" << interpolated[0]
+                     << " interpolated), 10^5 poses " << allocations[1] << " (" << interpolated[1] << " interpolated)");
+  BOOST_TEST(interpolated[1] > 50000u);
+  BOOST_TEST(allocations[1] == allocations[0]);
 }
 
 BOOST_AUTO_TEST_CASE(poses_beyond_a_limit_share_one_report) {

@@ -1,7 +1,9 @@
 // sweep_summary() against summarise(sweep()) on the same requests (solve/sweep_summary.hpp): the same status
 // for every input, the same largest residual, limits and singular poses, with the limits and singular poses
 // where the mechanisms put them (the paper example's dead point and parabola end, the anti-parallelogram's
-// change points at 90 and 270 degrees).
+// change points at 90 and 270 degrees). On fine grids the summary interpolates the poses between its strides
+// (dense output, solve/continuation.hpp): those poses are checked against the solved ones of sweep() and
+// against the residual tolerance.
 #define BOOST_TEST_MODULE solve_sweep_summary
 #include <boost/test/unit_test.hpp>
 
@@ -32,10 +34,14 @@ Both sweep_both_ways(const Fixture<double>& f, const std::vector<double>& inputs
   return b;
 }
 
-void check_equal(const SweepSummary<double>& a, const SweepSummary<double>& b) {
+/// Same statuses, limits and singular poses; the same largest residual where both solved the same poses
+/// (`same_poses`), otherwise both within Newton's tolerance.
+void check_equal(const SweepSummary<double>& a, const SweepSummary<double>& b, bool same_poses = true) {
   BOOST_TEST_REQUIRE(a.size() == b.size());
   for (std::size_t k = 0; k < a.size(); ++k) BOOST_TEST((a.status[k] == b.status[k]), "input " << k);
-  BOOST_TEST(a.max_residual == b.max_residual);
+  if (same_poses) BOOST_TEST(a.max_residual == b.max_residual);
+  const double tolerance = NewtonSettings<double>{}.residual_tolerance;
+  BOOST_TEST((a.max_residual <= tolerance && b.max_residual <= tolerance));
   BOOST_TEST_REQUIRE(a.limits.size() == b.limits.size());
   for (std::size_t i = 0; i < a.limits.size(); ++i) {
     BOOST_TEST((a.limits[i].status == b.limits[i].status));
@@ -45,7 +51,76 @@ void check_equal(const SweepSummary<double>& a, const SweepSummary<double>& b) {
   for (std::size_t i = 0; i < a.singular.size(); ++i) BOOST_TEST(a.singular[i].index == b.singular[i].index);
 }
 
+/// What the summary's continuation reports, with the values it passes for every pose (those a SweepSummary
+/// drops): the interpolated poses' values, for comparison with sweep()'s solved ones.
+struct Recorded {
+  static constexpr bool holds_values = false;
+  MatrixX<double> q;
+  std::vector<SolveReport<double>> reports, limits;
+  std::vector<bool> interpolated;
+  void set_pose(std::size_t k, const VectorX<double>& x, const VectorX<double>&, const SolveReport<double>& r) {
+    q.col(static_cast<Eigen::Index>(k)) = x;
+    set_report(k, r);
+  }
+  void set_interpolated_pose(std::size_t k, const VectorX<double>& x, const SolveReport<double>& r) {
+    set_pose(k, x, x, r);
+    interpolated[k] = true;
+  }
+  void set_report(std::size_t k, const SolveReport<double>& r) { reports[k] = r; }
+  void share_report(std::size_t k, std::size_t like) { reports[k] = reports[like]; }
+};
+
+/// Dense output on `inputs` against sweep(): the same status for every input; every plainly solved pose
+/// within `tolerance` (scaled) of the solved one and with a residual within Newton's tolerance. Returns the
+/// number of interpolated poses, which the summary counts too.
+std::size_t check_interpolated(const Fixture<double>& f, const std::vector<double>& inputs, double tolerance) {
+  const Both b = sweep_both_ways(f, inputs);
+  check_equal(b.alone, b.of_result, false);
+  SolveData<double> sd(f.mech);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_fixture(f, q, sd);
+  Recorded r;
+  r.q = MatrixX<double>::Zero(q.size(), static_cast<Eigen::Index>(inputs.size()));
+  r.reports.assign(inputs.size(), SolveReport<double>{});
+  r.interpolated.assign(inputs.size(), false);
+  detail::trace_sweep(f.mech, sd, q, 0, inputs, ContinuationSettings<double>{}, r);
+  std::size_t interpolated = 0;
+  double worst = 0;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    BOOST_TEST((r.reports[k].status == b.result.status(k)), "input " << k);
+    if (!b.result.ok(k)) continue;
+    BOOST_TEST(r.reports[k].residual <= sd.settings.residual_tolerance, "input " << k);
+    for (Eigen::Index i = 0; i < q.size(); ++i)
+      worst = std::max(worst, std::abs(r.q(i, static_cast<Eigen::Index>(k)) - b.result.q(k)(i)) / f.mech.variable_scale(static_cast<int>(i)));
+    if (r.interpolated[k]) ++interpolated;
+  }
+  BOOST_TEST(worst <= tolerance);
+  BOOST_TEST(b.alone.interpolated == interpolated);
+  BOOST_TEST_MESSAGE(interpolated << " of " << inputs.size() << " poses interpolated, largest difference " << worst);
+  return interpolated;
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(fine_grid_is_interpolated_to_round_off) {
+  // The paper example from -50 to 100 degrees in steps of 0.005: the strides span about 0.02 degrees (four
+  // or five steps), so most poses are interpolated; they agree with the solved ones (checked against MPFR in test_solve_mpfr)
+  // to round-off.
+  std::vector<double> inputs;
+  for (int k = 0; k <= 30000; ++k) inputs.push_back((-50 + k * 0.005) * pi<double>() / 180);
+  const std::size_t interpolated = check_interpolated(paper_fourbar<double>(), inputs, 1e-13);
+  BOOST_TEST(interpolated > inputs.size() / 2);
+}
+
+BOOST_AUTO_TEST_CASE(fine_grid_through_change_points_keeps_statuses) {
+  // The anti-parallelogram from -360 to 360 degrees in steps of 0.01: the strides stop at the change points
+  // (singular poses reported as by sweep(), at the same inputs), and next to them, where the condition grows,
+  // the interpolated poses agree with the solved ones as closely as those are accurate there.
+  std::vector<double> inputs;
+  for (int k = 36000; k >= -36000; --k) inputs.push_back(k * 0.01 * pi<double>() / 180);
+  const std::size_t interpolated = check_interpolated(antiparallelogram<double>(), inputs, 1e-9);
+  BOOST_TEST(interpolated > inputs.size() / 2);
+}
 
 BOOST_AUTO_TEST_CASE(paper_example_past_both_limits) {
   // Down from the assembly (0 deg) to the dead point near -57 deg, up to the parabola's end near 107 deg.

@@ -132,6 +132,18 @@ template <class S> SE2<S> loop_step(const PairState<S>& st, bool forward, std::a
   return inv;
 }
 
+/// A loop's residual rows (eq. 6): (x, y, angle) of its closing transform T = L_n+1.
+template <class S> void write_loop_residual(const SE2<S>& closing, int row, KinematicsData<S>& d) {
+  d.residual.template segment<3>(row) = Vec3<S>(closing.translation().x(), closing.translation().y(), closing.angle());
+}
+
+/// A rolling pair's residual row (eqs. 3-4): the arc lengths travelled on both contours from the reference.
+template <class S> S rolling_residual(const Mechanism<S>& m, const Pair<S>& p, const VectorX<S>& q, KinematicsData<S>& d) {
+  const int i = p.first_variable;
+  return d.arc_length_from_reference(m.contours[p.contour_a], i, q(i)) +
+         d.arc_length_from_reference(m.contours[p.contour_b], i + 1, q(i + 1));
+}
+
 /// One loop's rows (eq. 6): walks the loop accumulating L_k, stores each variable's spatial twist
 /// Ad_{L_k} lambda in d.spatial (for a backward step, Ad_{L_k} of -Ad_{E^-1} mu, as in loop_step), and
 /// writes the residual of T = L_n+1 and the Jacobian columns, the residual rates under those twists.
@@ -153,7 +165,7 @@ template <class S> void loop_constraints(const Mechanism<S>& m, const std::vecto
       left = left * inv;
     }
   }
-  d.residual.template segment<3>(row) = Vec3<S>(left.translation().x(), left.translation().y(), left.angle());
+  write_loop_residual(left, row, d);
   if (d.sparse) {  // entries in pattern order: 3 per variable, the loop's pairs in loop order
     int entry = d.pattern.loop_begin[static_cast<std::size_t>(row / 3)];
     for (const LoopEdge& e : loop) {
@@ -191,8 +203,7 @@ template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX
     const Pair<S>& p = m.pairs[k];
     const int i = p.first_variable;
     const PairState<S>& st = d.pairs[k];
-    d.residual(row) = d.arc_length_from_reference(m.contours[p.contour_a], i, q(i)) +
-                      d.arc_length_from_reference(m.contours[p.contour_b], i + 1, q(i + 1));
+    d.residual(row) = rolling_residual(m, p, q, d);
     if (d.sparse) {
       const int entry = d.pattern.loop_begin.back() + 2 * (row - 3 * static_cast<int>(m.loops.size()));
       d.jacobian_values(entry) = st.contact[0].speed;
@@ -203,6 +214,22 @@ template <class S> void compute_constraints(const Mechanism<S>& m, const VectorX
     }
     ++row;
   }
+}
+
+/// The residual alone (eqs. 6 and 3-4) at the pair states in d (evaluate_pairs first): what
+/// compute_constraints() writes to d.residual, without the twists and the Jacobian.
+template <class S> void compute_residual(const Mechanism<S>& m, const VectorX<S>& q, KinematicsData<S>& d) {
+  int row = 0;
+  for (const auto& loop : m.loops) {
+    SE2<S> left;
+    for (const LoopEdge& e : loop) {
+      const SE2<S>& edge = d.pairs[e.pair].transform;
+      left = left * (e.forward ? edge : edge.inverse());
+    }
+    write_loop_residual(left, row, d);
+    row += 3;
+  }
+  for (int k : m.rolling_pairs) d.residual(row++) = rolling_residual(m, m.pairs[k], q, d);
 }
 
 namespace detail {

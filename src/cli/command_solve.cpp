@@ -127,7 +127,8 @@ Command solve_command(CLI::App& rollkin) {
       "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
       "--step override it), following one branch in both directions from the assembly pose.\n"
       "CSV columns: angles in degrees, lengths in scene units. Without output options a one-line summary is\n"
-      "printed.\n"
+      "printed (on a grid finer than the solver needs, the poses between its steps are interpolated, each one\n"
+      "checked by evaluating its constraints).\n"
       "Status column: ok; singular (branches meet there, the Jacobian is singular: the values follow the branch,\n"
       "interpolated between regular poses on both sides; a line on stderr, exit status 1); dead_point,\n"
       "domain_exit, corner, no_convergence (a limit met: one line on stderr); not_reached (beyond a limit).\n"
@@ -158,7 +159,8 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   if (o.verbose) print_assembly(out, scene, assembly, cli::full_rank(m, sd));
   g_doing = "solving the sweep";
   // Only the poses' values feed the outputs, the interference check and the design check: without them the
-  // sweep keeps its summary alone (sweep_summary.hpp), no values.
+  // sweep keeps its summary alone (sweep_summary.hpp), no values, and on a fine grid interpolates the poses
+  // between its sub-steps, each checked by its residual (dense output, solve/continuation.hpp).
   const bool values_needed =
       !(o.csv.empty() && o.plot.empty() && o.draw.empty() && o.animate.empty()) || o.interference || o.verbose;
   std::optional<SweepResult<double>> result;

@@ -22,6 +22,15 @@
 // base of a prediction: the tracer steps over it from the last regular pose to a regular pose beyond, and a
 // requested input in between gets the cubic Hermite interpolant of the two regular poses (q and qdot),
 // polished by Newton when that is regular there, otherwise reported with status Singular.
+// Dense output (a sweep that reports no values, sweep_summary()). Where the requested inputs lie closer
+// together than accuracy needs, one sub-step (a stride) goes to the last input within the interpolation span;
+// the inputs before it take the cubic Hermite interpolant between the stride's ends (q and qdot), with their
+// residual evaluated (no Jacobian, no factorisation). One is kept when that residual is within a quarter of
+// Newton's tolerance (a solved pose meets the tolerance and then takes the closing step; an interpolated one
+// takes none) and its error bound is not singular; one that fails undoes the stride from there. The residual
+// of the interpolant is the Jacobian times its error, which grows as the span^4: the span follows the
+// stride's largest residual toward 8 epsilon (residuals of exact poses are a few epsilon of round-off), and
+// a stride that interpolated nothing doubles it only when its end's prediction met Newton's tolerance.
 // max_step, min_step are relative to the driver's variable scale (Mechanism::variable_scale).
 #pragma once
 
@@ -52,6 +61,8 @@ template <class S> struct ContinuationSettings {
   S max_correction_ratio = S(1) / S(2);
   S ill_conditioned = S(100);        // condition growth (vs the sweep's start) that marks a dead point
   Predictor predictor = Predictor::Hermite;
+  /// Dense output (file comment) where the sweep reports no values; false: every input is solved.
+  bool interpolate = true;
   /// Cancellation (e.g. a Ctrl-C in the Python module): when set and true, sweep() stops before the next
   /// requested pose; the poses not reached keep the status NotReached.
   const std::atomic<bool>* cancel = nullptr;
@@ -81,7 +92,7 @@ template <class S> class Tracer {
   Tracer(const Mechanism<S>& m, SolveData<S>& sd, int driver, const ContinuationSettings<S>& cfg, const VectorX<S>& q0)
       : m_(m), sd_(sd), var_(m.drivers[driver]), cfg_(cfg), q_(q0), q_prev_(q0), trial_(q0), tangent_(q0), v_(q0),
         v_prev_(q0), rate_(VectorX<S>::Zero(m.drivers.size())), weight_(q0.size()), limits_(m), span_q_(q0),
-        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0), reach_(q0) {
+        span_v_(q0), pose_q_(q0), pose_v_(q0), held_(q0), held_v_(q0), reach_(q0), undo_q_(q0), undo_v_(q0) {
     rate_(driver) = S(1);
     for (Eigen::Index i = 0; i < weight_.size(); ++i) weight_(i) = S(1) / m.variable_scale(static_cast<int>(i));
     const S scale = m.variable_scale(var_);
@@ -98,6 +109,75 @@ template <class S> class Tracer {
   /// The pose at the last target advance() reached, and its velocity.
   const VectorX<S>& q() const { return inside_span_ ? pose_q_ : q_; }
   const VectorX<S>& v() const { return inside_span_ ? pose_v_ : v_; }
+  /// The driver's value at the current pose.
+  const S& driver_value() const { return q_(var_); }
+
+  /// Dense output (file comment): the distance in the driver over which a stride may interpolate.
+  const S& interpolation_span() const { return span_; }
+
+  /// A stride: one sub-step to driver value `end`, kept only when clean (Newton converged to a regular pose
+  /// on the followed branch: no sign change of det J_u, no contact limit, no singular span pending). Then
+  /// the pose is accepted and the last two poses bracket the stride; otherwise nothing changes and advance()
+  /// takes the input.
+  bool stride(const S& end, SolveReport<S>& rep) {
+    using std::abs;
+    const S h = end - q_(var_);
+    if (has_span_ || h == S(0) || abs(h) > max_step_) return false;
+    if (!try_step(end, rep) || singular_trial(rep)) return false;
+    const int sign = sd_.determinant_sign();
+    if (sign * sign_ < 0 || limits_.met(q_, trial_)) return false;
+    undo_q_ = q_prev_;
+    undo_v_ = v_prev_;
+    undo_has_prev_ = has_prev_;
+    undo_sign_ = sign_;
+    accept();
+    if (sign != 0) sign_ = sign;
+    interpolated_ = rep;
+    interpolated_.iterations = 0;
+    interpolated_.evaluations = 1;
+    return true;
+  }
+
+  /// The pose at driver value t inside the last stride, the cubic Hermite between its ends, and its scaled
+  /// residual (the constraints evaluated there, no Jacobian).
+  const S& interpolate(const S& t) {
+    hermite(q_prev_, v_prev_, q_prev_(var_), q_, v_, q_(var_), t, pose_q_);
+    for (int d : m_.drivers) pose_q_(d) = q_(d);
+    pose_q_(var_) = t;
+    evaluate_pairs<S>(m_, pose_q_, nullptr, 2, sd_.kin);
+    compute_residual(m_, pose_q_, sd_.kin);
+    interpolated_.residual = weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight);
+    return interpolated_.residual;
+  }
+  /// The last interpolated pose is kept: its residual is within a quarter of Newton's tolerance and its
+  /// error bound (with the stride end's condition) is not singular.
+  bool interpolation_verified() const {
+    return interpolated_.residual <= sd_.settings.residual_tolerance / S(4) && !singular_trial(interpolated_);
+  }
+  const VectorX<S>& interpolated_pose() const { return pose_q_; }
+  const SolveReport<S>& interpolated_report() const { return interpolated_; }
+
+  /// Back to the pose the last stride started from; the span shrinks to half the distance to the input
+  /// whose interpolation failed (t).
+  void undo_stride(const S& t) {
+    using std::abs;
+    restore_stride_start();
+    span_ = abs(t - q_(var_)) / S(2);
+  }
+
+  /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
+  /// `largest`: that residual scales as span^4 and is aimed at 8 epsilon, the span at most twice the stride
+  /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
+  /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
+  /// (on a grid too coarse to interpolate, no stride is tried and undone).
+  void update_span(const S& largest, bool prediction_met) {
+    using std::abs;
+    using std::min;
+    using std::sqrt;
+    const S target = S(8) * epsilon<S>();
+    const S growth = largest > S(0) ? S(S(9) / S(10) * sqrt(sqrt(S(target / largest)))) : S(prediction_met ? 2 : 1);
+    span_ = min(S(abs(q_(var_) - q_prev_(var_)) * min(growth, S(2))), max_step_);
+  }
 
   /// Advances to the driver value `target`. Returns Converged (iterations and evaluations summed over the
   /// sub-steps), Singular (values interpolated on the branch, see the file comment), or the limit met, with
@@ -166,6 +246,16 @@ template <class S> class Tracer {
   }
 
  private:
+  /// The state before the last stride's accept().
+  void restore_stride_start() {
+    q_.swap(q_prev_);
+    v_.swap(v_prev_);
+    q_prev_.swap(undo_q_);
+    v_prev_.swap(undo_v_);
+    has_prev_ = undo_has_prev_;
+    sign_ = undo_sign_;
+  }
+
   /// Predicts trial_ at driver value t, corrects it with Newton; accepted if converged and the correction is
   /// small against the tangent step (a larger one means Newton went to another branch).
   bool try_step(const S& t, SolveReport<S>& rep) {
@@ -415,6 +505,12 @@ template <class S> class Tracer {
   VectorX<S> held_, held_v_;
   SolveReport<S> held_report_;
   VectorX<S> reach_;  // how far each variable may move within the located limit (classify_stop)
+  // Dense output: the interpolation span, the report of the interpolated poses, the state a stride undoes.
+  S span_ = S(0);
+  SolveReport<S> interpolated_;
+  VectorX<S> undo_q_, undo_v_;
+  bool undo_has_prev_ = false;
+  int undo_sign_ = 0;
 };
 
 }  // namespace detail
@@ -446,6 +542,33 @@ template <class Before> void nearest_first(std::vector<std::size_t>& indices, Be
     std::sort(indices.begin(), indices.end(), before);
 }
 
+/// Dense output (file comment) from input side[k] on: the inputs within the tracer's interpolation span in
+/// one stride, the last solved, those before it interpolated and kept when verified. Returns how many
+/// inputs were reported (0: the tracer takes input side[k] itself).
+template <class S, class Out>
+std::size_t interpolate_stride(Tracer<S>& tracer, const std::vector<S>& inputs, const std::vector<std::size_t>& side,
+                               std::size_t k, Out& out) {
+  using std::abs;
+  using std::max;
+  const S from = tracer.driver_value();
+  std::size_t end = k;
+  while (end + 1 < side.size() && abs(inputs[side[end + 1]] - from) <= tracer.interpolation_span()) ++end;
+  SolveReport<S> rep;
+  if (!tracer.stride(inputs[side[end]], rep)) return 0;
+  S largest(0);
+  for (std::size_t j = k; j < end; ++j) {
+    largest = max(largest, tracer.interpolate(inputs[side[j]]));
+    if (!tracer.interpolation_verified()) {
+      tracer.undo_stride(inputs[side[j]]);
+      return j - k;
+    }
+    out.set_interpolated_pose(side[j], tracer.interpolated_pose(), tracer.interpolated_report());
+  }
+  tracer.update_span(largest, rep.iterations == 0);
+  out.set_pose(side[end], tracer.q(), tracer.v(), rep);
+  return end + 1 - k;
+}
+
 /// sweep()'s continuation from the assembled pose q0 to every requested input, reported into out (a
 /// SweepResult, or a SweepSummary for sweep_summary()).
 template <class S, class Out>
@@ -465,6 +588,14 @@ void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, 
     detail::Tracer<S> tracer(m, sd, driver, cfg, q0);
     for (std::size_t k = 0; k < side->size(); ++k) {
       if (cfg.cancel && cfg.cancel->load(std::memory_order_relaxed)) return;
+      if constexpr (!Out::holds_values) {
+        if (cfg.interpolate) {
+          if (const std::size_t done = interpolate_stride(tracer, inputs, *side, k, out)) {
+            k += done - 1;
+            continue;
+          }
+        }
+      }
       const std::size_t at = (*side)[k];
       const SolveReport<S> rep = tracer.advance(inputs[at]);
       if (!rep.has_pose()) {  // this input and all beyond it on this side are past the limit

@@ -95,6 +95,8 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     const SweepResult* r_;
   };
   Poses poses{this};  // one per requested input, in the requested order
+  /// Keeps every pose's values and rates: each requested input is solved (continuation.hpp).
+  static constexpr bool holds_values = true;
 
   SweepResult() = default;
   SweepResult(const SweepResult& o) : Base(o) {}

@@ -2,8 +2,9 @@
 // poses, the limits met and the singular poses' reports. sweep_summary() (continuation.hpp) fills one by the
 // same continuation as sweep() for a run that reports only this (`rollkin solve` without output files): it
 // stores no values, where a SweepResult's columns are written once per pose (their first touch, page faults
-// and zeroing, was 29 % of such a run of the paper example). summarise() reads one from a SweepResult, so a
-// report is written from a summary whichever way the sweep ran.
+// and zeroing, was 29 % of such a run of the paper example), and on a fine grid interpolates the poses
+// between its sub-steps, each verified by its residual (dense output, continuation.hpp). summarise() reads
+// one from a SweepResult, so a report is written from a summary whichever way the sweep ran.
 //
 //   const SweepSummary<double> s = sweep_summary(m, sd, q0, assembly, 0, inputs);
 //   if (s.solved() < inputs.size()) for (const auto& l : s.limits) explain(l);
@@ -28,6 +29,9 @@ template <class S> struct SweepSummary {
   std::vector<SolveStatus> status;     // per requested input
   std::vector<SingularPose> singular;  // in the order of the requested inputs
   S max_residual = S(0);               // over the plainly solved poses
+  std::size_t interpolated = 0;        // poses interpolated between sub-steps (dense output, continuation.hpp)
+  /// Keeps no values: the continuation may interpolate poses between its sub-steps (continuation.hpp).
+  static constexpr bool holds_values = false;
 
   SweepSummary() = default;
   /// `poses` requested inputs, each with status `initial` until it is reported.
@@ -46,6 +50,11 @@ template <class S> struct SweepSummary {
     if (rep.status == SolveStatus::Singular) singular.push_back({k, rep});
   }
   template <class Q, class V> void set_pose(std::size_t k, const Q&, const V&, const SolveReport<S>& rep) { set_report(k, rep); }
+  /// A pose interpolated and verified by its residual (dense output): plainly solved, counted apart.
+  template <class Q> void set_interpolated_pose(std::size_t k, const Q&, const SolveReport<S>& rep) {
+    set_report(k, rep);
+    ++interpolated;
+  }
   /// Pose k has the status of pose `like`, which the continuation gives only to poses without values (not
   /// reached beyond a limit), so nothing else is counted.
   void share_report(std::size_t k, std::size_t like) { status[k] = status[like]; }
