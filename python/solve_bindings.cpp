@@ -54,9 +54,8 @@ struct Job {
   rollkin::SolveReport<double> assembly;
   rollkin::io::SweepTable table;
   std::exception_ptr error;
-  bool keep_result = false;    // keep `result` and `analysis` (Scene.write, Scene.centrodes)
+  bool keep_result = false;    // keep `result` (Scene.write, Scene.centrodes)
   std::optional<rollkin::SweepResult<double>> result;
-  rollkin::io::SweepAnalysis analysis;
   std::vector<double> values;  // the inputs in file units (the table's input column)
 };
 
@@ -85,7 +84,7 @@ Job prepare(const PyScene& s, const Request& r) {
 
 /// What the CLI's writers take: the solved sweep of a job (job.result set).
 rollkin::io::SweepOutput output_of(const Job& job, const Request& r) {
-  return {*job.scene, job.sweep, *job.result, job.values, r.analysis ? &job.analysis : nullptr};
+  return {*job.scene, job.sweep, *job.result, job.values, r.analysis};
 }
 
 /// Assembles and sweeps one scene (on a worker thread: no Python here). Exceptions are kept in job.error.
@@ -101,7 +100,6 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
     job.result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
     if (cancel) return;
     job.values = rollkin::io::sweep_values(job.sweep);
-    if (r.analysis) job.analysis = rollkin::io::analyse_sweep(m, *job.result);
     job.table = rollkin::io::sweep_table(output_of(job, r), r.rates);
     if (!job.keep_result) job.result.reset();
   } catch (...) {

@@ -298,15 +298,22 @@ template <class S> void acceleration_residual(const Mechanism<S>& m, const Vecto
   detail::loop_accelerations(m, qdot, &qddot, d, out);
 }
 
-/// World pose of every link, from the spanning tree (pairs evaluated at q).
-template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
-  std::vector<SE2<S>> pose(m.links.size());
-  for (int i : m.tree_order) {  // parents before children; the ground (first) keeps the identity
+/// World pose of every link into `pose` (one per link, sized by the caller: nothing is allocated), from the
+/// spanning tree (pairs evaluated at q).
+template <class S> void link_poses(const Mechanism<S>& m, const KinematicsData<S>& d, std::vector<SE2<S>>& pose) {
+  pose[static_cast<std::size_t>(m.ground)] = SE2<S>();
+  for (int i : m.tree_order) {  // parents before children, the ground first
     if (i == m.ground) continue;
     const LoopEdge e = m.tree[i].edge;
     const SE2<S>& E = d.pairs[e.pair].transform;
     pose[i] = pose[m.tree[i].parent] * (e.forward ? E : E.inverse());
   }
+}
+
+/// World pose of every link, from the spanning tree (pairs evaluated at q).
+template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
+  std::vector<SE2<S>> pose(m.links.size());
+  link_poses(m, d, pose);
   return pose;
 }
 

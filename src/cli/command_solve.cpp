@@ -171,8 +171,7 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
     // Everything is computed before anything is written, and then written all or nothing.
     g_doing = "building the output files";
     const std::vector<double> file_values = io::sweep_values(sw);
-    const cli::SweepAnalysis analysis = o.analysis ? cli::analyse_sweep(m, *result) : cli::SweepAnalysis{};
-    const cli::OutputContext ctx{scene, sw, *result, file_values, o.analysis ? &analysis : nullptr};
+    const cli::OutputContext ctx{scene, sw, *result, file_values, o.analysis};
     run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink, o.jobs); });
     run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
     run.set_output("--draw", [&] { return cli::draw_svg(ctx); });

@@ -59,26 +59,60 @@ std::string stack_charts(const std::vector<io::SvgChart>& charts) {
   return out + "</svg>\n";
 }
 
-/// One chart against the input with a series per (name, value of a solved pose) pair.
+/// One chart against the input with a series per (name, value of an analysed pose) pair.
 struct ChartSpec {
   std::string title, y_label;
   std::vector<std::string> names;
   std::function<double(const PoseAnalysis<double>&, std::size_t series)> value;
+  std::vector<int> link;  // per series, the link it charts (angular accelerations and jerks); else empty
 };
 
-io::SvgChart analysis_chart(const OutputContext& ctx, const std::vector<double>& x, const ChartSpec& spec) {
-  io::SvgChart chart(760, 360);
-  chart.set_title(base_name(ctx.scene.file) + ": " + spec.title).set_x_label(axis_label(ctx, ctx.sweep.variable))
-      .set_y_label(spec.y_label).set_legend(io::LegendPosition::Outside);
-  for (std::size_t k = 0; k < spec.names.size(); ++k) {
-    io::ChartSeries s;
-    s.name = spec.names[k];
-    s.x = x;
-    for (const auto& a : *ctx.analysis) s.y.push_back(a ? spec.value(*a, k) : kNaN);
-    s.color = io::palette_color(k);
-    chart.add_series(std::move(s));
+/// y[c][k]: the values of series k of chart c, one per pose (NaN where not solved), in one pass over the
+/// poses: each is analysed once and not kept. turns[l]: link l's angular acceleration is not zero at some
+/// pose.
+void chart_values(const OutputContext& ctx, const std::vector<ChartSpec>& specs,
+                  std::vector<std::vector<std::vector<double>>>& y, std::vector<bool>& turns) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const std::size_t poses = ctx.result.size();
+  y.assign(specs.size(), {});
+  for (std::size_t c = 0; c < specs.size(); ++c) y[c].assign(specs[c].names.size(), std::vector<double>(poses, kNaN));
+  turns.assign(m.links.size(), false);
+  AnalysisData<double> data(m);
+  for (std::size_t r = 0; r < poses; ++r) {
+    if (!ctx.result.has_pose(r)) continue;
+    const PoseAnalysis<double> a = analyse_pose(m, ctx.result.q(r), ctx.result.qdot(r), data);
+    for (std::size_t c = 0; c < specs.size(); ++c)
+      for (std::size_t k = 0; k < specs[c].names.size(); ++k) y[c][k][r] = specs[c].value(a, k);
+    for (std::size_t l = 0; l < m.links.size(); ++l) turns[l] = turns[l] || a.angular_acceleration[l] != 0.0;
   }
-  return chart;
+}
+
+/// The charts of specs with their values; a link's series only where the link turns (chart_values), a chart
+/// with no series left out.
+std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const std::vector<double>& x,
+                                            const std::vector<ChartSpec>& specs) {
+  std::vector<std::vector<std::vector<double>>> y;
+  std::vector<bool> turns;
+  chart_values(ctx, specs, y, turns);
+  std::vector<io::SvgChart> charts;
+  for (std::size_t c = 0; c < specs.size(); ++c) {
+    const ChartSpec& spec = specs[c];
+    io::SvgChart chart(760, 360);
+    chart.set_title(base_name(ctx.scene.file) + ": " + spec.title).set_x_label(axis_label(ctx, ctx.sweep.variable))
+        .set_y_label(spec.y_label).set_legend(io::LegendPosition::Outside);
+    std::size_t shown = 0;
+    for (std::size_t k = 0; k < spec.names.size(); ++k) {
+      if (!spec.link.empty() && !turns[static_cast<std::size_t>(spec.link[k])]) continue;
+      io::ChartSeries s;
+      s.name = spec.names[k];
+      s.x = x;
+      s.y = std::move(y[c][k]);
+      s.color = io::palette_color(shown++);
+      chart.add_series(std::move(s));
+    }
+    if (shown > 0) charts.push_back(std::move(chart));
+  }
+  return charts;
 }
 
 /// The --analysis charts (docs/analysis.md), in the CSV's output units.
@@ -101,18 +135,14 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
     curvatures.push_back(m.pairs[k].name + ".kappa1");
     curvatures.push_back(m.pairs[k].name + ".kappa2");
   }
-  // Links whose turning accelerates somewhere in the sweep (not a translating follower, nor a crank driven at
-  // the input's constant rate), and the unknowns of prismatic pairs: a follower's stroke, whose acceleration
-  // and jerk a cam designer reads.
-  for (std::size_t l = 0; l < m.links.size(); ++l) {
-    const bool turns = std::any_of(ctx.analysis->begin(), ctx.analysis->end(), [&](const auto& a) {
-      return a && a->angular_acceleration[l] != 0.0;
-    });
-    if (static_cast<int>(l) != m.ground && turns) {
+  // The moving links, charted where their turning accelerates somewhere in the sweep (not a translating
+  // follower, nor a crank driven at the input's constant rate: charts_from_specs), and the unknowns of
+  // prismatic pairs: a follower's stroke, whose acceleration and jerk a cam designer reads.
+  for (std::size_t l = 0; l < m.links.size(); ++l)
+    if (static_cast<int>(l) != m.ground) {
       links.push_back(m.links[l].name);
       moving.push_back(static_cast<int>(l));
     }
-  }
   std::vector<std::string> strokes;
   std::vector<int> stroke_variable;
   for (int i : m.unknowns)
@@ -142,13 +172,15 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
                      std::string("angular acceleration [") + io::unit_label(kOutputAngle) + " / " + per_input + "^2]", links,
                      [=](const PoseAnalysis<double>& a, std::size_t k) {
                        return a.angular_acceleration[moving[k]] * degrees / (in_scale * in_scale);
-                     }});
+                     },
+                     moving});
   if (!links.empty())
     specs.push_back({"angular jerk of the links",
                      std::string("angular jerk [") + io::unit_label(kOutputAngle) + " / " + per_input + "^3]", links,
                      [=](const PoseAnalysis<double>& a, std::size_t k) {
                        return a.angular_jerk[moving[k]] * degrees / (in_scale * in_scale * in_scale);
-                     }});
+                     },
+                     moving});
   if (!strokes.empty()) {
     specs.push_back({"acceleration of the sliding pairs", "acceleration [" + len + " / " + per_input + "^2]", strokes,
                      [=](const PoseAnalysis<double>& a, std::size_t k) { return a.qddot(stroke_variable[k]) / (in_scale * in_scale); }});
@@ -157,9 +189,7 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
                        return a.qdddot(stroke_variable[k]) / (in_scale * in_scale * in_scale);
                      }});
   }
-  std::vector<io::SvgChart> charts;
-  for (const ChartSpec& s : specs) charts.push_back(analysis_chart(ctx, x, s));
-  return charts;
+  return charts_from_specs(ctx, x, specs);
 }
 
 }  // namespace

@@ -20,11 +20,9 @@ namespace rollkin::cli {
 // The table of a solved sweep lives in the library (rollkin/io/sweep_table.hpp, shared with the Python module);
 // these names keep the CLI's writers as they were.
 using OutputContext = io::SweepOutput;
-using io::analyse_sweep;
 using io::contact_pairs;
 using io::input_column;
 using io::input_column_unit;
-using io::SweepAnalysis;
 
 /// The sweep's table (io::sweep_table: its columns) as CSV text.
 std::string csv_text(const OutputContext& ctx, bool rates);

@@ -2,12 +2,14 @@
 // columns.
 #include "rollkin/io/sweep_table.hpp"
 
+#include "rollkin/analysis.hpp"
 #include "rollkin/io/csv.hpp"
 #include "rollkin/solve/batch.hpp"
 
 #include <algorithm>
 #include <future>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace rollkin::io {
@@ -78,12 +80,16 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
   return cols;
 }
 
-/// What a row is computed with, allocated once per table: the pose's variables, the pairs evaluated there,
-/// the row's values.
+/// What a row is computed with, allocated once per table (per thread): the pose's variables, the pairs
+/// evaluated there, the links' poses, the analysis' workspace (with the analysis columns), the row's values.
 struct RowWork {
-  explicit RowWork(const Mechanism<double>& m) : kin(m) {}
+  RowWork(const Mechanism<double>& m, bool analysis) : kin(m), link_pose(m.links.size()) {
+    if (analysis) analysis_data.emplace(m);
+  }
   KinematicsData<double> kin;
   VectorX<double> q;
+  std::vector<SE2<double>> link_pose;
+  std::optional<AnalysisData<double>> analysis_data;
   std::vector<double> row;
 };
 
@@ -102,19 +108,18 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
     const auto qdot = res.qdot(r);
     for (int i : m.unknowns) row.push_back(ok ? qdot(i) * output_scale(m, i) / in_scale : kNaN);
   }
-  std::vector<SE2<double>> lp;
   if (ok) {
     w.q = q;
     evaluate_pairs<double>(m, w.q, nullptr, 1, w.kin);
-    lp = link_poses(m, w.kin);
+    link_poses(m, w.kin, w.link_pose);
   }
-  for (std::size_t l = 0; l < m.links.size(); ++l) {
-    row.push_back(ok ? lp[l].translation().x() : kNaN);
-    row.push_back(ok ? lp[l].translation().y() : kNaN);
-    row.push_back(ok ? from_radians(lp[l].angle(), kOutputAngle) : kNaN);
+  for (const SE2<double>& lp : w.link_pose) {
+    row.push_back(ok ? lp.translation().x() : kNaN);
+    row.push_back(ok ? lp.translation().y() : kNaN);
+    row.push_back(ok ? from_radians(lp.angle(), kOutputAngle) : kNaN);
   }
   if (out.analysis) {
-    if (const auto& a = (*out.analysis)[r]) analysis_values(m, *a, in_scale, row);
+    if (ok) analysis_values(m, analyse_pose(m, q, res.qdot(r), *w.analysis_data), in_scale, row);
     else row.resize(row.size() + analysis_column_count(m), kNaN);
   }
   row.push_back(ok ? res.report(r).residual : kNaN);
@@ -144,15 +149,6 @@ void append_table_row(const CsvRows& t, std::size_t r, RowWork& w, std::string& 
 
 double output_scale(const Mechanism<double>& m, int var) {
   return m.variables[var].kind == ParamKind::Angle ? from_radians(1.0, kOutputAngle) : 1.0;
-}
-
-SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result) {
-  AnalysisData<double> data(m);
-  SweepAnalysis out;
-  out.reserve(result.size());
-  for (std::size_t k = 0; k < result.size(); ++k)
-    out.push_back(result.has_pose(k) ? std::optional(analyse_pose(m, result.q(k), result.qdot(k), data)) : std::nullopt);
-  return out;
 }
 
 std::vector<int> contact_pairs(const Mechanism<double>& m) {
@@ -185,7 +181,7 @@ SweepTable sweep_table(const SweepOutput& out, bool rates) {
   const std::size_t rows = out.result.size();
   t.columns.assign(t.names.size(), std::vector<double>(rows));
   t.status.reserve(rows);
-  RowWork w(out.scene.mechanism);
+  RowWork w(out.scene.mechanism, out.analysis);
   for (std::size_t r = 0; r < rows; ++r) {
     row_values(out, rates, others, r, w);
     if (w.row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
@@ -203,7 +199,7 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   const std::size_t rows = out.result.size();
   const std::size_t workers = batch_workers((rows + kRowsPerBlock - 1) / kRowsPerBlock, threads);
   if (workers <= 1) {
-    RowWork w(out.scene.mechanism);
+    RowWork w(out.scene.mechanism, out.analysis);
     for (std::size_t r = 0; r < rows; ++r) {
       append_table_row(table, r, w, sink.buffer());
       sink.flush_full();
@@ -214,14 +210,14 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   // round's blocks in row order: two rounds of text are held, whatever the table's size. Each thread's row
   // buffers and text sit on cache lines of their own (appending to neighbouring strings would share them).
   struct alignas(64) Worker {
-    explicit Worker(const Mechanism<double>& m) : work(m) {}
+    Worker(const Mechanism<double>& m, bool analysis) : work(m, analysis) {}
     RowWork work;
     std::string text;
   };
   const std::size_t per_round = workers * kRowsPerBlock;
   std::vector<Worker> worker;
   worker.reserve(workers);
-  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out.scene.mechanism);
+  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out.scene.mechanism, out.analysis);
   std::vector<std::string> ready(workers);
   std::vector<std::future<void>> running;  // declared last: destroyed (waited for) before what it uses
   const auto start_round = [&](std::size_t first) {

@@ -8,14 +8,12 @@
 //   std::string text = table.csv();
 #pragma once
 
-#include "rollkin/analysis.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,11 +26,6 @@ constexpr AngleUnit kOutputAngle = AngleUnit::Degree;
 /// in scene units).
 double output_scale(const Mechanism<double>& m, int var);
 
-/// The contact analysis (docs/analysis.md) of every pose of a sweep, computed once for all the writers;
-/// empty where the pose was not solved.
-using SweepAnalysis = std::vector<std::optional<PoseAnalysis<double>>>;
-SweepAnalysis analyse_sweep(const Mechanism<double>& m, const SweepResult<double>& result);
-
 /// The contact pairs (cam and rolling) in pair order: the order of the analysis columns.
 std::vector<int> contact_pairs(const Mechanism<double>& m);
 
@@ -41,8 +34,11 @@ struct SweepOutput {
   const Scene& scene;
   const Sweep& sweep;
   const SweepResult<double>& result;
-  const std::vector<double>& inputs;        // requested input values in the file's units (one per pose)
-  const SweepAnalysis* analysis = nullptr;  // when set, the analysis columns are added
+  const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
+  // Adds the contact analysis columns (docs/analysis.md). Each pose is analysed as its row is built, by the
+  // thread that builds it: nothing per pose is kept (a sweep's analyses, one heap object each, held 1 KB per
+  // pose: 150 MB for 150,001 poses of the paper example).
+  bool analysis = false;
 };
 
 /// The unit of the input column: degrees for an angle, the scene's length unit for a length, "" otherwise.
@@ -73,7 +69,7 @@ SweepTable sweep_table(const SweepOutput& out, bool rates);
 
 /// The same table as CSV text (SweepTable::csv(), identical bytes) streamed row by row into `sink` (the
 /// CLI's --csv): no column of the table is held in memory. With `threads` other than 1 (0: one per core) the
-/// rows are formatted by that many threads, a block of rows each at a time, and written in row order: the
+/// rows are built (poses analysed) and formatted by that many threads, a block of rows each at a time, and written in row order: the
 /// same bytes, with at most two blocks per thread of text held.
 void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int threads = 1);
 

@@ -142,8 +142,7 @@ template <class S> class Tracer {
   /// residual (the constraints evaluated there, no Jacobian).
   const S& interpolate(const S& t) {
     hermite(q_prev_, v_prev_, q_prev_(var_), q_, v_, q_(var_), t, pose_q_);
-    for (int d : m_.drivers) pose_q_(d) = q_(d);
-    pose_q_(var_) = t;
+    hold_drivers(pose_q_, t);
     evaluate_pairs<S>(m_, pose_q_, nullptr, 2, sd_.kin);
     compute_residual(m_, pose_q_, sd_.kin);
     interpolated_.residual = weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight);
@@ -246,6 +245,12 @@ template <class S> class Tracer {
   }
 
  private:
+  /// Pins the drivers on `pose`: the swept one at t, the other inputs exactly where they are.
+  void hold_drivers(VectorX<S>& pose, const S& t) const {
+    for (int d : m_.drivers) pose(d) = q_(d);
+    pose(var_) = t;
+  }
+
   /// The state before the last stride's accept().
   void restore_stride_start() {
     q_.swap(q_prev_);
@@ -308,8 +313,7 @@ template <class S> class Tracer {
     // Checked at t and at the middle of the span (t may lie next to an end, where any cubic fits).
     for (const S& at : {t, S((q_(var_) + t_far) / S(2))}) {
       hermite(q_, v_, q_(var_), trial_, held_v_, t_far, at, pose_q_);
-      for (int d : m_.drivers) pose_q_(d) = q_(d);
-      pose_q_(var_) = at;
+      hold_drivers(pose_q_, at);
       evaluate_and_factor(m_, pose_q_, sd_, m_.equation_count());
       ++evaluations;
       if (!(weighted_max_norm<S>(sd_.kin.residual, sd_.row_weight) <= tolerance<S>(S(1) / S(2)))) return false;
@@ -333,11 +337,8 @@ template <class S> class Tracer {
   SolveReport<S> pose_in_span(const S& t) {
     const S t0 = span_q_(var_);
     hermite(span_q_, span_v_, t0, q_, v_, q_(var_), t, pose_q_, &pose_v_);
-    for (std::size_t k = 0; k < m_.drivers.size(); ++k) {
-      pose_q_(m_.drivers[k]) = q_(m_.drivers[k]);
-      pose_v_(m_.drivers[k]) = rate_(static_cast<Eigen::Index>(k));
-    }
-    pose_q_(var_) = t;
+    hold_drivers(pose_q_, t);
+    for (std::size_t k = 0; k < m_.drivers.size(); ++k) pose_v_(m_.drivers[k]) = rate_(static_cast<Eigen::Index>(k));
     inside_span_ = true;
     trial_ = pose_q_;
     SolveReport<S> rep = solve_position(m_, trial_, sd_);
@@ -379,8 +380,7 @@ template <class S> class Tracer {
         break;
       }
     }
-    for (int d : m_.drivers) trial_(d) = q_(d);  // the other inputs stay exactly where they are
-    trial_(var_) = t;
+    hold_drivers(trial_, t);
   }
 
   void accept() {
