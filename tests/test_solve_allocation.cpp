@@ -2,11 +2,16 @@
 // per-pose work allocates nothing. Counted with a replacement of the global operator new in this test
 // executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of the same
 // range that reaches the dead point at the end of the paper example's motion) must not grow with the poses;
-// nor those of a summary whose poses are interpolated between strides (dense output).
+// nor those of a summary whose poses are interpolated between strides (dense output), nor those of writing
+// a sweep's CSV (io/sweep_table.hpp).
 #define BOOST_TEST_MODULE solve_allocation
 #include <boost/test/unit_test.hpp>
 
 #include "mechanisms.hpp"
+#include "test_support.hpp"
+
+#include "rollkin/io/output_set.hpp"
+#include "rollkin/io/sweep_table.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -115,4 +120,41 @@ BOOST_AUTO_TEST_CASE(poses_beyond_a_limit_share_one_report) {
   BOOST_TEST(!many.result.report(999).detail.empty());
   BOOST_TEST_MESSAGE("allocations past a limit: 10 poses " << few.allocations << ", 1000 poses " << many.allocations);
   BOOST_TEST(many.allocations == few.allocations);
+}
+
+namespace {
+
+/// The allocations made by writing the CSV (one thread, no analysis) of the paper example swept from -40 to
+/// 90 degrees by `step`; the sweep and the output's declaration made before counting.
+long count_csv(double step) {
+  const io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
+  io::Sweep sw = *scene.sweep;
+  sw.from = -40;
+  sw.to = 90;
+  sw.step = step;
+  const std::vector<double> inputs = io::sweep_inputs(sw), values = io::sweep_values(sw);
+  SolveData<double> sd(scene.mechanism);
+  VectorX<double> q = scene.guess;
+  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
+  const SweepResult<double> result = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
+  BOOST_TEST_REQUIRE(result.all_solved());
+  const io::SweepOutput out{scene, sw, result, values};
+  const std::filesystem::path file = testing::scratch_dir("solve_allocation") / "rows.csv";
+  io::OutputSet set;
+  set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, false, sink, 1); });
+  const long before = g_allocations.load();
+  set.commit();
+  const long allocations = g_allocations.load() - before;
+  BOOST_TEST(std::filesystem::file_size(file) > 100 * inputs.size());  // the rows were written
+  return allocations;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(csv_rows_allocate_nothing) {
+  // 1,001 and 10,001 rows (2.4 MB: the sink's block is written out twice): the row's values, the link poses,
+  // the status field and the text are built in buffers sized once.
+  const long few = count_csv(0.13), many = count_csv(0.013);
+  BOOST_TEST_MESSAGE("CSV allocations: 1001 rows " << few << ", 10001 rows " << many);
+  BOOST_TEST(many == few);
 }
