@@ -36,8 +36,8 @@ struct SweepOutput {
   const SweepResult<double>& result;
   const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
   // Adds the contact analysis columns (docs/analysis.md). Each pose is analysed as its row is built, by the
-  // thread that builds it: nothing per pose is kept (a sweep's analyses, one heap object each, held 1 KB per
-  // pose: 150 MB for 150,001 poses of the paper example).
+  // thread that builds it, and not kept (kept, the analyses take about 1 KB per pose: 150 MB for 150,001
+  // poses of the paper example).
   bool analysis = false;
 };
 
@@ -69,8 +69,8 @@ SweepTable sweep_table(const SweepOutput& out, bool rates);
 
 /// The same table as CSV text (SweepTable::csv(), identical bytes) streamed row by row into `sink` (the
 /// CLI's --csv): no column of the table is held in memory. With `threads` other than 1 (0: one per core) the
-/// rows are built (poses analysed) and formatted by that many threads, a block of rows each at a time, and written in row order: the
-/// same bytes, with at most two blocks per thread of text held.
+/// rows are built (poses analysed) and formatted by that many threads, a block of rows each at a time, and
+/// written in row order: the same bytes, with at most two blocks per thread of text held.
 void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int threads = 1);
 
 }  // namespace rollkin::io
