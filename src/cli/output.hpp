@@ -50,6 +50,10 @@ std::string draw_svg(const OutputContext& ctx);
 /// The file name of a path, without its directories (titles of the outputs).
 std::string base_name(const std::string& file);
 
+/// An SVG document from its <svg> element on, without the XML declaration: to nest it in another document
+/// (plot_svg's stacked charts, draw_svg's tiled panels).
+std::string strip_header(const std::string& svg);
+
 /// A link as drawn, in its own frame: --draw places it at each drawn pose, --animate draws it once and moves
 /// it with one transform per frame.
 struct LinkSketch {
