@@ -47,6 +47,23 @@ struct PaperSweep {
   }
 };
 
+/// The CSV of `out` as write_sweep_csv writes it with `threads` into scratch file `name`, read back.
+std::string written_csv(const io::SweepOutput& out, bool rates, int threads, const std::string& name) {
+  const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / name;
+  io::OutputSet set;
+  set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, rates, sink, threads); });
+  set.commit();
+  return testing::read_text(file);
+}
+
+/// Column `name` of the table (a test failure if it has none).
+const std::vector<double>& column(const io::SweepTable& t, const std::string& name) {
+  for (std::size_t c = 0; c < t.names.size(); ++c)
+    if (t.names[c] == name) return t.columns[c];
+  BOOST_FAIL("no column " << name);
+  return t.columns.front();
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
@@ -57,21 +74,14 @@ BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
   const io::SweepOutput out{scene, paper.sw, result, values};
   const io::SweepTable table = io::sweep_table(out, /*rates=*/true);
 
-  const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / "paper.csv";
-  io::OutputSet set;
-  set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, true, sink); });
-  set.commit();
-  const std::string text = testing::read_text(file);
+  const std::string text = written_csv(out, true, 1, "paper.csv");
   BOOST_TEST(text == table.csv());
 
   std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);  // header
   const int x = 1;           // A.x, a length: the column holds the solver's value itself
-  int x_column = -1;
-  for (std::size_t c = 0; c < table.names.size(); ++c)
-    if (table.names[c] == "A.x") x_column = static_cast<int>(c);
-  BOOST_TEST_REQUIRE(x_column >= 0);
+  const std::vector<double>& x_values = column(table, "A.x");
   std::size_t r = 0, checked = 0;
   for (; std::getline(lines, line); ++r) {
     std::istringstream fields(line);
@@ -82,7 +92,7 @@ BOOST_AUTO_TEST_CASE(streamed_csv_reads_back_to_the_solver_values) {
       ++checked;
     }
     if (result.has_pose(r)) BOOST_TEST(std::strtod(line.substr(0).c_str(), nullptr) == values[r]);
-    if (result.has_pose(r)) BOOST_TEST(table.columns[static_cast<std::size_t>(x_column)][r] == result.q(r)(x));
+    if (result.has_pose(r)) BOOST_TEST(x_values[r] == result.q(r)(x));
   }
   BOOST_TEST(r == result.size());
   BOOST_TEST(checked == r * table.names.size());
@@ -97,27 +107,11 @@ BOOST_AUTO_TEST_CASE(csv_formatted_by_several_threads_is_the_same_file) {
   const io::SweepOutput out{paper.scene, paper.sw, paper.result, paper.values};
   const std::string expected = io::sweep_table(out, /*rates=*/true).csv();
   for (int threads : {2, 3, 0}) {
-    const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / ("threads" + std::to_string(threads) + ".csv");
-    io::OutputSet set;
-    set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, true, sink, threads); });
-    set.commit();
-    const std::string text = testing::read_text(file);
+    const std::string text = written_csv(out, true, threads, "threads" + std::to_string(threads) + ".csv");
     BOOST_TEST(text.size() == expected.size(), "threads " << threads);
     BOOST_TEST((text == expected), "threads " << threads << ": not the bytes of the one-thread table");
   }
 }
-
-namespace {
-
-/// Column `name` of the table (a test failure if it has none).
-const std::vector<double>& column(const io::SweepTable& t, const std::string& name) {
-  for (std::size_t c = 0; c < t.names.size(); ++c)
-    if (t.names[c] == name) return t.columns[c];
-  BOOST_FAIL("no column " << name);
-  return t.columns.front();
-}
-
-}  // namespace
 
 // --analysis builds each row's analysis as the row is built (nothing per pose is kept): every thread count
 // gives the bytes of the one-thread table, and the columns of row r belong to pose r. Their second and third
@@ -131,11 +125,8 @@ BOOST_AUTO_TEST_CASE(analysis_columns_are_built_per_row_and_match_differences_of
   const io::SweepTable table = io::sweep_table(out, /*rates=*/false);
   const std::string expected = table.csv();
   for (int threads : {1, 2, 0}) {
-    const std::filesystem::path file = testing::scratch_dir("io_sweep_table") / ("analysis" + std::to_string(threads) + ".csv");
-    io::OutputSet set;
-    set.set_writer(set.add("--csv", file.string()), [&](io::OutputSink& sink) { io::write_sweep_csv(out, false, sink, threads); });
-    set.commit();
-    BOOST_TEST((testing::read_text(file) == expected), "threads " << threads << ": not the bytes of the table");
+    const std::string text = written_csv(out, false, threads, "analysis" + std::to_string(threads) + ".csv");
+    BOOST_TEST((text == expected), "threads " << threads << ": not the bytes of the table");
   }
 
   const double h = paper.sw.step;
