@@ -106,6 +106,33 @@ py::object to_python(const json& j) {
   }
 }
 
-std::string path_text(const py::object& path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
+std::string path_argument(const py::handle& path, const char* argument) {
+  const py::module_ os = py::module_::import("os");
+  const std::string name = argument;
+  if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) && !py::hasattr(path, "__fspath__"))
+    throw py::type_error(name + ": expected a path (str, bytes or os.PathLike), got " +
+                         std::string(py::str(path.get_type().attr("__name__"))));
+  const py::object given = os.attr("fspath")(path);
+  py::object encoded;
+  try {
+    encoded = os.attr("fsencode")(given);
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_UnicodeError)) throw;
+    throw py::value_error(name + ": the path " + std::string(py::repr(given)) +
+                          " cannot be a file name: the file system's encoding cannot encode it (" + e.what() + ")");
+  }
+  const std::string bytes = encoded.cast<std::string>();
+  const std::string shown = py::repr(os.attr("fsdecode")(given));
+  if (bytes.empty()) throw py::value_error(name + ": the path is empty; expected a file name");
+  if (bytes.find('\0') != std::string::npos)
+    throw py::value_error(name + ": the path " + shown + " contains a NUL character, which no file name can hold");
+  return bytes;
+}
+
+py::str text_of(const std::string& text) {
+  PyObject* s = PyUnicode_DecodeFSDefaultAndSize(text.data(), static_cast<Py_ssize_t>(text.size()));
+  if (!s) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(s);
+}
 
 }  // namespace rollkin::python

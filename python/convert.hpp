@@ -27,8 +27,16 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
 /// A JSON value as Python objects (dict, list, str, int, float, bool, None).
 py::object to_python(const json& j);
 
-/// A path given to Python (str or os.PathLike) as text.
-std::string path_text(const py::object& path);
+/// Every path argument of the module (load_scene's path, scene()'s base_dir and name, write()'s and
+/// centrodes()'s files) as the bytes the file system takes: str, bytes or os.PathLike (os.fspath), a str
+/// encoded and bytes taken as they are, as os.fsencode does (so a bytes name decodes with os.fsdecode).
+/// `argument` names it in the errors: TypeError for another type, ValueError for an empty path, a NUL
+/// character (which would end the name early) or a str the file system's encoding cannot encode.
+std::string path_argument(const py::handle& path, const char* argument);
+
+/// Text from C++ (a file name as the file system gave it, a message naming one) as a Python str, bytes that
+/// are not UTF-8 kept as os.fsdecode keeps them (surrogate escapes).
+py::str text_of(const std::string& text);
 
 /// Texts as a NumPy array of str (dtype <U width of the longest), its UCS-4 buffer filled here: no Python
 /// string per row.

@@ -49,13 +49,14 @@ PYBIND11_MODULE(rollkin, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
-    } catch (const rollkin::io::OutputError& e) {
-      PyErr_SetString(output_error.ptr(), e.what());
+    } catch (const rollkin::io::OutputError& e) {  // messages name files as the file system gave them: text_of
+      PyErr_SetObject(output_error.ptr(), rollkin::python::text_of(e.what()).ptr());
     } catch (const InputError& e) {
-      py::object error = py::reinterpret_borrow<py::object>(input_error)(e.what());
-      error.attr("file") = e.file();
-      error.attr("location") = e.location();
-      error.attr("message") = e.message();
+      using rollkin::python::text_of;
+      py::object error = py::reinterpret_borrow<py::object>(input_error)(text_of(e.what()));
+      error.attr("file") = text_of(e.file());
+      error.attr("location") = text_of(e.location());
+      error.attr("message") = text_of(e.message());
       PyErr_SetObject(input_error.ptr(), error.ptr());
     }
   });

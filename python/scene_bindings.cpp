@@ -13,33 +13,49 @@
 namespace rollkin::python {
 namespace {
 
-/// `dir` is made absolute ("" is the working directory), so that a scene sent to another process (pickle, e.g.
-/// to dask workers) finds its contour files wherever that process runs.
-PyScene build(json document, const std::string& file, const std::string& dir, const std::string& source = {}) {
-  const std::string where = (dir.empty() ? std::filesystem::current_path() : std::filesystem::absolute(dir)).string();
-  auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, where));
-  const std::string absolute_source = source.empty() ? source : std::filesystem::absolute(source).string();
-  return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where, absolute_source};
+/// Builds a scene from the document `read` returns, on a worker thread that Ctrl-C interrupts (interruptible:
+/// reading a file and building a scene can take long). `dir` is made absolute ("" is the working directory),
+/// so that a scene sent to another process (pickle, e.g. to dask workers) finds its contour files wherever
+/// that process runs; `source`, the file the document was read from or that name= names, is never written over
+/// (Scene.write, centrodes(dxf=)).
+PyScene build(std::function<json()> read, const std::string& file, const std::string& dir, const std::string& source = {}) {
+  return interruptible<PyScene>([read = std::move(read), file, dir, source](const std::atomic<bool>&) {
+    const std::string where = (dir.empty() ? std::filesystem::current_path() : std::filesystem::absolute(dir)).string();
+    json document = read();
+    auto scene = std::make_shared<const rollkin::io::Scene>(rollkin::io::build_scene(document, file, where));
+    const std::string absolute_source = source.empty() ? source : std::filesystem::absolute(source).string();
+    return PyScene{std::move(scene), std::make_shared<const json>(std::move(document)), file, where, absolute_source};
+  });
+}
+
+/// A document already in memory as build()'s reader (moved out once).
+std::function<json()> given(json document) {
+  auto held = std::make_shared<json>(std::move(document));
+  return [held] { return std::move(*held); };
 }
 
 /// Pickling: the document as JSON text, the name and the directory; unpickling builds the scene again.
-py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), s.file, s.dir, s.source); }
+py::tuple scene_state(const PyScene& s) { return py::make_tuple(s.document->dump(), text_of(s.file), text_of(s.dir), text_of(s.source)); }
 
 PyScene scene_from_state(const py::tuple& t) {
   if (t.size() != 4) throw py::value_error("rollkin.Scene: a pickled state is (document, file, dir, source)");
-  const std::string file = t[1].cast<std::string>();
-  return build(rollkin::io::parse_json_document(t[0].cast<std::string>(), file), file, t[2].cast<std::string>(),
-               t[3].cast<std::string>());
+  const std::string file = path_argument(t[1], "file"), dir = path_argument(t[2], "dir");
+  const std::string source = py::len(t[3]) == 0 ? std::string() : path_argument(t[3], "source");
+  return build(given(rollkin::io::parse_json_document(t[0].cast<std::string>(), file)), file, dir, source);
 }
 
 PyScene load_scene(const py::object& path) {
-  const std::string file = path_text(path);
-  return build(rollkin::io::read_scene_document(file), file, std::filesystem::path(file).parent_path().string(), file);
+  const std::string file = path_argument(path, "path");
+  return build([file] { return rollkin::io::read_scene_document(file); }, file,
+               std::filesystem::path(file).parent_path().string(), file);
 }
 
-PyScene scene_from_dict(const py::dict& document, const py::object& base_dir, const std::string& name) {
-  const std::string dir = base_dir.is_none() ? std::string() : path_text(base_dir);
-  return build(to_json(document, "", name), name, dir);
+/// A scene from a dict. `name`, when given, names the scene in messages and is protected as its file: a dict
+/// made from a scene file's document (sc.document()) is never written over through it.
+PyScene scene_from_dict(const py::dict& document, const py::object& base_dir, const py::object& name) {
+  const std::string dir = base_dir.is_none() ? std::string() : path_argument(base_dir, "base_dir");
+  const std::string file = name.is_none() ? std::string("<dict>") : path_argument(name, "name");
+  return build(given(to_json(document, "", file)), file, dir, name.is_none() ? std::string() : file);
 }
 
 /// The scene with each (JSON path, value) of `overrides` set in a copy of its document, then built and
@@ -56,7 +72,7 @@ PyScene modified(const PyScene& s, const py::dict& overrides) {
     const std::string path = item.first.cast<std::string>();
     rollkin::io::set_at_path(document, path, to_json(item.second, path, file), file);
   }
-  return build(std::move(document), file, s.dir, s.source);
+  return build(given(std::move(document)), file, s.dir, s.source);
 }
 
 /// An (n, 2) float64 array of points, checked: the shape and every value finite (ValueError naming the row).
@@ -140,20 +156,22 @@ void bind_scenes(py::module_& m, py::class_<PyScene>& scene) {
       .def("document", [](const PyScene& s) { return to_python(*s.document); },
            "The scene's JSON document as Python objects (dicts, lists, numbers, strings): edit it and pass it to\n"
            "rollkin.scene() for changes beyond modified().")
-      .def_property_readonly("file", [](const PyScene& s) { return s.file; }, "The source named in messages.")
+      .def_property_readonly("file", [](const PyScene& s) { return text_of(s.file); }, "The source named in messages.")
       .def_property_readonly("inputs", [](const PyScene& s) { return s.scene->inputs; },
                              "The full names of the inputs (drivers), e.g. [\"O_A.theta2\"].")
       .def_property_readonly("sweep", &sweep_dict,
                              "The scene's own sweep as {\"input\", \"from\", \"to\", \"step\"} (file units), or None.")
       .def(py::pickle(&scene_state, &scene_from_state))
-      .def("__repr__", [](const PyScene& s) { return "<rollkin.Scene " + s.file + ">"; });
+      .def("__repr__", [](const PyScene& s) { return text_of("<rollkin.Scene " + s.file + ">"); });
 
   m.def("load_scene", &load_scene, py::arg("path"),
         "Reads a scene file (JSON, docs/scene_format.md) and checks it. Raises InputError with the command-line\n"
-        "tool's message (file, JSON path, what is wrong and expected).");
-  m.def("scene", &scene_from_dict, py::arg("document"), py::arg("base_dir") = py::none(), py::arg("name") = "<dict>",
+        "tool's message (file, JSON path, what is wrong and expected). path: str, bytes or os.PathLike. Ctrl-C\n"
+        "interrupts it (KeyboardInterrupt).");
+  m.def("scene", &scene_from_dict, py::arg("document"), py::arg("base_dir") = py::none(), py::arg("name") = py::none(),
         "A scene from its JSON document given as a dict (the content of a scene file). Relative contour files are\n"
-        "resolved against base_dir (default: the current directory); `name` names the scene in messages.\n"
+        "resolved against base_dir (default: the current directory); `name` names the scene in messages (default\n"
+        "\"<dict>\") and, as the scene's file, is never written over by write() or centrodes(dxf=).\n"
         "Raises InputError naming the JSON path of a bad value (NaN and infinities are not JSON numbers).");
   m.def("samples", &samples, py::arg("xy"), py::arg("name") = "samples",
         "A sampled contour (type \"samples\", docs/scene_format.md) from an (n, 2) array of x, y rows, as the dict\n"

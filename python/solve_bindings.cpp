@@ -1,10 +1,10 @@
 // Solving in the Python module: Scene.solve, write, centrodes, reference and solve_many, each sweep solved on
 // worker threads with the GIL released.
 //
-// Threads: every solve, one scene or many, runs on worker threads; the calling thread waits with the GIL
-// released and, every kPollInterval, takes the GIL to run Python's signal handlers (PyErr_CheckSignals). A
-// Ctrl-C there raises the cancellation flag that sweep() polls between poses (ContinuationSettings::cancel),
-// the workers are joined and KeyboardInterrupt propagates.
+// Threads: every solve, one scene or many, runs on worker threads (interruptible, bindings.hpp); the calling
+// thread waits with the GIL released and, every kPollInterval, takes the GIL to run Python's signal handlers
+// (PyErr_CheckSignals). A Ctrl-C there raises the cancellation flag that sweep() polls between poses
+// (ContinuationSettings::cancel) and KeyboardInterrupt propagates; an assembly under way ends on its worker.
 //
 // Files (Scene.write, Scene.centrodes(dxf=)) go through io::OutputSet like the CLI's: every path is checked
 // before solving, an output that is one of the scene's input files is refused, and all are written or none.
@@ -17,6 +17,7 @@
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/sweep_table.hpp"
+#include "rollkin/io/work_bound.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -35,15 +36,13 @@
 namespace rollkin::python {
 namespace {
 
-constexpr std::chrono::milliseconds kPollInterval{50};  // how often a waiting solve checks for Ctrl-C
-
 // ---- solving ---------------------------------------------------------------------------------------------
 
 /// What to solve: the sweep's overrides (None: the scene's own "sweep") and the extra columns.
 struct Request {
   std::optional<double> start, stop, step;
   bool analysis = false, rates = false;
-  double max_steps = 1e7;
+  double max_steps = rollkin::io::kDefaultMaxSteps;
 };
 
 /// One scene to solve and, once solved, its table (and, for writing files from it, its sweep result).
@@ -59,25 +58,21 @@ struct Job {
   std::vector<double> values;  // the inputs in file units (the table's input column)
 };
 
-/// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise).
+/// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise:
+/// io::bounded_inputs, the one rule of max_steps).
 Job prepare(const PyScene& s, const Request& r) {
   const rollkin::io::Scene& scene = *s.scene;
   Job job;
   job.scene = s.scene;
   const std::optional<rollkin::io::Sweep> requested = rollkin::io::requested_sweep(scene, r.start, r.stop, r.step);
   if (!requested) throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
-  rollkin::io::Sweep& sw = job.sweep;
-  sw = *requested;
-  const std::string bad = rollkin::io::check_sweep(sw);
+  job.sweep = *requested;
+  const std::string bad = rollkin::io::check_sweep(job.sweep);
   if (!bad.empty()) throw py::value_error("start/stop/step: " + bad);
-  job.inputs = rollkin::io::sweep_inputs(sw);
-  const double estimate = rollkin::estimate_substeps(scene.mechanism, scene.guess, sw.driver, job.inputs);
-  if (estimate > r.max_steps) {
-    std::ostringstream os;
-    os << scene.file << ": the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
-       << estimate << " continuation sub-steps, above max_steps = " << r.max_steps
-       << "; ask for a smaller range, a larger step, or raise max_steps";
-    throw py::value_error(os.str());
+  try {
+    job.inputs = rollkin::io::bounded_inputs(scene, job.sweep, r.max_steps, "max_steps");
+  } catch (const std::exception& e) {
+    throw py::value_error(scene.file + ": " + e.what());
   }
   return job;
 }
@@ -94,7 +89,9 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
     const rollkin::Mechanism<double>& m = scene.mechanism;
     rollkin::SolveData<double> sd(m);
     rollkin::VectorX<double> q = scene.guess;
+    if (cancel) return;
     job.assembly = rollkin::assemble(m, q, sd, scene.held);
+    if (cancel) return;
     rollkin::ContinuationSettings<double> cfg;
     cfg.cancel = &cancel;
     job.result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
@@ -107,24 +104,17 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
   }
 }
 
-/// Solves every job on up to `threads` worker threads (0: one per core; rollkin::run_batch) with the GIL
-/// released, the calling thread checking for Ctrl-C every kPollInterval. A signal handler's exception
-/// (KeyboardInterrupt) cancels the workers (between poses), waits for them and propagates.
-void run_all(std::vector<Job>& jobs, const Request& r, int threads) {
+/// Solves every job on up to `threads` worker threads (0: one per core; rollkin::run_batch), the calling thread
+/// checking for Ctrl-C (interruptible): a KeyboardInterrupt cancels the workers (between poses) and propagates;
+/// an assembly under way ends on its worker, its result dropped.
+void run_all(const std::shared_ptr<std::vector<Job>>& jobs, const Request& r, int threads) {
   if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core), got " + std::to_string(threads));
-  bool interrupted = false;
-  {
-    py::gil_scoped_release nogil;
+  interruptible<bool>([jobs, r, threads](const std::atomic<bool>& stop) {
     rollkin::run_batch(
-        jobs.size(), threads, [&](std::size_t k, const std::atomic<bool>& cancel) { run(jobs[k], r, cancel); },
-        [&] {
-          py::gil_scoped_acquire gil;
-          interrupted = PyErr_CheckSignals() != 0;
-          return interrupted;
-        },
-        kPollInterval);
-  }
-  if (interrupted) throw py::error_already_set();
+        jobs->size(), threads, [&](std::size_t k, const std::atomic<bool>& cancel) { run((*jobs)[k], r, cancel); },
+        [&] { return stop.load(); }, kPollInterval);
+    return true;
+  });
 }
 
 /// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
@@ -145,24 +135,27 @@ py::dict to_dict(const Job& job) {
 
 /// Solves one scene on a worker thread; an assembly that fails is an InputError, as in the CLI.
 Job solved(const PyScene& s, const Request& r, bool keep_result) {
-  std::vector<Job> jobs{prepare(s, r)};
-  jobs[0].keep_result = keep_result;
+  auto jobs = std::make_shared<std::vector<Job>>();
+  jobs->push_back(prepare(s, r));
+  Job& job = jobs->front();
+  job.keep_result = keep_result;
   run_all(jobs, r, 1);
-  if (jobs[0].error) std::rethrow_exception(jobs[0].error);
-  if (jobs[0].assembly.status == rollkin::SolveStatus::CannotAssemble)
-    throw rollkin::io::assembly_error(*s.scene, jobs[0].assembly.detail);
-  return std::move(jobs[0]);
+  if (job.error) std::rethrow_exception(job.error);
+  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble) throw rollkin::io::assembly_error(*s.scene, job.assembly.detail);
+  return std::move(job);
 }
 
 py::dict solve(const PyScene& s, const Request& r) { return to_dict(solved(s, r, false)); }
 
 // ---- files -----------------------------------------------------------------------------------------------
 
-/// The files a scene read (never written over) as an OutputSet's inputs.
+/// The files a scene read (never written over) as an OutputSet's inputs: its scene file (load_scene's path,
+/// scene()'s name=, kept by modified() and pickling) and its contour files.
 rollkin::io::OutputSet output_set(const PyScene& s) {
-  std::vector<std::string> inputs;
-  if (!s.source.empty()) inputs.push_back(s.source);
-  inputs.insert(inputs.end(), s.scene->files_read.begin(), s.scene->files_read.end());
+  std::vector<rollkin::io::InputFile> inputs;
+  if (!s.source.empty()) inputs.push_back({s.source, "the scene's input file '" + s.source + "'"});
+  for (const std::string& f : s.scene->files_read)
+    inputs.push_back({f, "the input file '" + f + "' (a contour file the scene read)"});
   return rollkin::io::OutputSet(std::move(inputs));
 }
 
@@ -178,7 +171,7 @@ py::dict write(const PyScene& s, const Request& r, const std::vector<FileRequest
   rollkin::io::OutputSet outputs = output_set(s);
   std::vector<std::pair<std::size_t, const FileRequest*>> given;
   for (const FileRequest& f : files)
-    if (!f.path.is_none()) given.emplace_back(outputs.add(f.label, path_text(f.path)), &f);
+    if (!f.path.is_none()) given.emplace_back(outputs.add(f.label, path_argument(f.path, f.label)), &f);
   const Job job = solved(s, r, true);
   const rollkin::io::SweepOutput out = output_of(job, r);
   for (const auto& [index, f] : given) outputs.set(index, f->text(out));
@@ -204,14 +197,18 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
   if (a == b) throw py::value_error("centrodes(): give two different links, got \"" + link_a + "\" twice");
   rollkin::io::OutputSet outputs = output_set(s);
   const std::optional<std::size_t> dxf_index =
-      dxf.is_none() ? std::nullopt : std::optional<std::size_t>(outputs.add("dxf", path_text(dxf)));
+      dxf.is_none() ? std::nullopt : std::optional<std::size_t>(outputs.add("dxf", path_argument(dxf, "dxf")));
   const Job job = solved(s, r, true);
   const rollkin::Mechanism<double>& m = s.scene->mechanism;
   rollkin::KinematicsData<double> kin(m);
   const auto centres = rollkin::centrodes(m, kin, *job.result, a, b);
-  if (dxf_index) {
-    outputs.set(*dxf_index, rollkin::cli::centrode_dxf(output_of(job, r), centres, a, b));
+  if (dxf_index) {  // a centrode that is one point (a revolute joins the links) has no curve: no DXF, a warning
+    const std::string single_point = rollkin::cli::centrode_single_point(output_of(job, r), centres, a, b);
+    if (single_point.empty()) outputs.set(*dxf_index, rollkin::cli::centrode_dxf(output_of(job, r), centres, a, b));
+    else outputs.omit(*dxf_index);
     outputs.commit();
+    const std::string why = single_point + "; dxf not written: a point has no curve to draw as a spline";
+    if (!single_point.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, why.c_str(), 1) != 0) throw py::error_already_set();
   }
   const py::ssize_t n = static_cast<py::ssize_t>(centres.size());
   py::array_t<double> input(n), ax(n), ay(n), bx(n), by(n), wx(n), wy(n);
@@ -244,11 +241,10 @@ py::dict reference(const PyScene& s, const Request& r, int digits) {
   if (digits != 30 && digits != 50 && digits != 100)
     throw py::value_error("reference(): digits must be 30, 50 or 100, got " + std::to_string(digits));
   const Job job = prepare(s, r);
-  rollkin::ReferenceSweep ref;
-  {
-    py::gil_scoped_release nogil;
-    ref = rollkin::io::scene_reference(*s.scene, job.sweep, digits);
-  }
+  const rollkin::ReferenceSweep ref = interruptible<rollkin::ReferenceSweep>(
+      [scene = s.scene, sweep = job.sweep, digits](const std::atomic<bool>&) {
+        return rollkin::io::scene_reference(*scene, sweep, digits);
+      });
   if (ref.assembly_status == rollkin::SolveStatus::CannotAssemble)
     throw rollkin::io::assembly_error(*s.scene, ref.assembly_detail);
   const rollkin::Mechanism<double>& m = s.scene->mechanism;
@@ -277,18 +273,21 @@ py::dict reference(const PyScene& s, const Request& r, int digits) {
 }
 
 py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int threads) {
-  std::vector<Job> jobs;
-  for (const PyScene& s : scenes) jobs.push_back(prepare(s, r));
+  auto jobs = std::make_shared<std::vector<Job>>();
+  for (const PyScene& s : scenes) jobs->push_back(prepare(s, r));
   run_all(jobs, r, threads);
-  for (const Job& j : jobs)
+  for (const Job& j : *jobs)
     if (j.error) std::rethrow_exception(j.error);
   py::list out;
-  for (const Job& j : jobs) out.append(to_dict(j));
+  for (const Job& j : *jobs) out.append(to_dict(j));
   return out;
 }
 
+/// The request of a call; max_steps checked by the rule the CLI's --max-steps follows (io/work_bound.hpp).
 Request request(std::optional<double> start, std::optional<double> stop, std::optional<double> step, bool analysis,
                 bool rates, double max_steps) {
+  const std::string bad = rollkin::io::max_steps_problem(max_steps);
+  if (!bad.empty()) throw py::value_error("max_steps: " + bad);
   return Request{start, stop, step, analysis, rates, max_steps};
 }
 
@@ -299,7 +298,8 @@ const char* const kSolveDoc = R"(Sweeps the scene's input and returns its table.
 start, stop, step: the sweep of the scene's input in the file's units (degrees for an angle in a "deg" scene);
 each None keeps the scene's "sweep" (a scene without one needs all three).
 analysis=True adds the contact analysis columns (as --analysis), rates=True the rate columns (as --rates).
-max_steps bounds the work like the CLI's --max-steps (ValueError above it).
+max_steps bounds the work like the CLI's --max-steps: a finite number >= 1 (ValueError otherwise); a sweep
+estimated to need more continuation sub-steps, or of more values, raises ValueError (docs/reliability.md).
 
 Returns a dict: CSV column name -> numpy float64 array (one value per input value, NaN where the pose was not
 solved), and "status" -> numpy array of str ("ok", "singular", "dead_point", "domain_exit", "corner",
@@ -338,7 +338,8 @@ const char* const kReferenceDoc = R"(The same assembly and sweep solved in MPFR 
 Returns a dict of float64 arrays with the columns of `rollkin reference --csv` (the input, every other
 variable in the file's units, "residual") and "status": each value is the high-precision result rounded once
 to the nearest double, so solve()'s columns can be compared with it to measure the double solver's error.
-The MPFR run takes milliseconds per pose; it holds no GIL but cannot be interrupted before it ends.)";
+The MPFR run takes milliseconds per pose; it holds no GIL, and Ctrl-C returns from it at once (KeyboardInterrupt)
+while the MPFR sweep under way ends on its worker thread.)";
 
 }  // namespace
 
@@ -350,7 +351,7 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
              return solve(s, request(start, stop, step, analysis, rates, max_steps));
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
-           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = 1e7, kSolveDoc)
+           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveDoc)
       .def("write",
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
               const py::object& csv, const py::object& plot, const py::object& draw, const py::object& animate,
@@ -365,14 +366,14 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("draw") = py::none(),
            py::arg("animate") = py::none(), py::arg("analysis") = false, py::arg("rates") = false,
-           py::arg("max_steps") = 1e7, kWriteDoc)
+           py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kWriteDoc)
       .def("centrodes",
            [](const PyScene& s, const std::string& a, const std::string& b, std::optional<double> start,
               std::optional<double> stop, std::optional<double> step, const py::object& dxf, double max_steps) {
              return centrodes(s, a, b, request(start, stop, step, false, false, max_steps), dxf);
            },
            py::arg("link_a"), py::arg("link_b"), py::arg("start") = py::none(), py::arg("stop") = py::none(),
-           py::arg("step") = py::none(), py::kw_only(), py::arg("dxf") = py::none(), py::arg("max_steps") = 1e7,
+           py::arg("step") = py::none(), py::kw_only(), py::arg("dxf") = py::none(), py::arg("max_steps") = rollkin::io::kDefaultMaxSteps,
            kCentrodesDoc)
       .def("reference",
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
@@ -380,7 +381,7 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
              return reference(s, request(start, stop, step, false, false, max_steps), digits);
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
-           py::arg("digits") = 50, py::arg("max_steps") = 1e7, kReferenceDoc);
+           py::arg("digits") = 50, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kReferenceDoc);
 
   m.def("solve_many",
         [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
@@ -389,12 +390,12 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
         },
         py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
         py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
-        py::arg("max_steps") = 1e7, kSolveManyDoc);
+        py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveManyDoc);
   m.def("_sweep_seconds",
         [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
           // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
           // table and no NumPy, for the overhead of Python and dask per variant against it.
-          Job job = prepare(s, request(start, stop, step, false, false, 1e7));
+          Job job = prepare(s, request(start, stop, step, false, false, rollkin::io::kDefaultMaxSteps));
           py::gil_scoped_release nogil;
           const auto t0 = std::chrono::steady_clock::now();
           const rollkin::Mechanism<double>& m = job.scene->mechanism;

@@ -117,6 +117,35 @@ BOOST_AUTO_TEST_CASE(outputs_resolving_to_an_input_are_refused) {
   BOOST_TEST(read_text(scene) == "{}");
 }
 
+BOOST_AUTO_TEST_CASE(a_run_of_several_scenes_names_the_scene_that_reads_the_input) {
+  // One set for a whole run: every file any scene reads, each with what it is; a refusal names it.
+  const fs::path dir = fresh_dir("run");
+  const std::string points = write_text(dir / "b.svg", "<svg/>");
+  OutputSet run({rollkin::io::InputFile{(dir / "a.json").string(), "the scene file 'a.json'"},
+                 rollkin::io::InputFile{points, "the contour file 'b.svg' read by scene 'a.json'"}});
+  const std::string msg = output_error_of([&] { run.add("b.json's --plot", (dir / "b.svg").string()); });
+  BOOST_TEST(contains(msg, "refusing to write b.json's --plot '" + (dir / "b.svg").string() +
+                               "': it is the contour file 'b.svg' read by scene 'a.json'; inputs are never overwritten"));
+  run.add("x.json's --draw", (dir / "x_d.svg").string());
+  BOOST_TEST(contains(output_error_of([&] { run.add("x_d.json's --plot", (dir / "x_d.svg").string()); }),
+                      "x_d.json's --plot '" + (dir / "x_d.svg").string() + "' and x.json's --draw '" +
+                          (dir / "x_d.svg").string() + "' name the same file"));
+  BOOST_TEST(read_text(points) == "<svg/>");
+}
+
+BOOST_AUTO_TEST_CASE(an_omitted_output_leaves_its_file_alone) {
+  const fs::path dir = fresh_dir("omit");
+  write_text(dir / "kept.dxf", "the user's drawing");
+  OutputSet set;
+  const std::size_t txt = set.add("--out", (dir / "a.txt").string()), dxf = set.add("--dxf", (dir / "kept.dxf").string());
+  set.set(txt, "0 2\n");
+  set.omit(dxf);
+  set.commit();
+  BOOST_TEST(read_text(dir / "a.txt") == "0 2\n");
+  BOOST_TEST(read_text(dir / "kept.dxf") == "the user's drawing");
+  BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.txt", "kept.dxf"}));
+}
+
 BOOST_AUTO_TEST_CASE(bad_output_paths_are_refused_when_added) {
   const fs::path dir = fresh_dir("paths");
   OutputSet set;

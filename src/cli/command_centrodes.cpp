@@ -39,7 +39,9 @@ Command centrodes_command(CLI::App& rollkin) {
       "A value where the centre is at infinity (pure relative translation) or that was not solved is a comment\n"
       "line in both files and a line on stderr (exit status 1).\n"
       "--dxf: each run of consecutive centres as the cubic spline through them (exact NURBS form of the\n"
-      "spline a \"samples\" contour fits to the points; closed when the sweep ends where it starts).\n" +
+      "spline a \"samples\" contour fits to the points; closed when the sweep ends where it starts). A centrode\n"
+      "that is one point (links joined by a revolute) is said to be one; its point files are written, the\n"
+      "DXF is not (a line on stderr says why).\n" +
       std::string(kExitStatus));
   return {app, [o] { return run_centrodes(*o); }};
 }
@@ -77,7 +79,11 @@ int run_centrodes(const CentrodesOptions& o) {
   const cli::OutputContext ctx{scene, run.sweep, result, file_values};
   run.set_output("--out (link A)", [&] { return cli::centrode_text(ctx, centres, a, b, true); });
   run.set_output("--out (link B)", [&] { return cli::centrode_text(ctx, centres, a, b, false); });
-  run.set_output("--dxf", [&] { return cli::centrode_dxf(ctx, centres, a, b); });
+  // A centrode that is one point (two links joined by a revolute) has no curve to draw: its point files are
+  // written, the DXF is not (docs/reliability.md, "Outputs").
+  const std::string single_point = cli::centrode_single_point(ctx, centres, a, b);
+  if (single_point.empty()) run.set_output("--dxf", [&] { return cli::centrode_dxf(ctx, centres, a, b); });
+  else run.omit_output("--dxf");
   g_doing = "writing the output files";
   run.outputs.commit();
 
@@ -96,6 +102,10 @@ int run_centrodes(const CentrodesOptions& o) {
   std::cout << fs::path(scene.file).filename().string() << ": " << finite << "/" << centres.size()
             << " instant centres of '" << o.links[1] << "' relative to '" << o.links[0] << "' written to " << file_a
             << " and " << file_b << "\n";
+  if (!single_point.empty()) {
+    std::cout << fs::path(scene.file).filename().string() << ": " << single_point << "\n";
+    if (!o.dxf.empty()) std::cerr << scene.file << ": --dxf '" << o.dxf << "' not written: a centrode that is one point has no curve to draw as a spline\n";
+  }
   for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
   return finite == centres.size() ? 0 : 1;
 }

@@ -135,19 +135,26 @@ Command solve_command(CLI::App& rollkin) {
       "--max-steps: the estimate is the input's travel over the largest sub-step (5 deg for angles) plus the\n"
       "number of values.\n"
       "Several scenes (rollkin solve A.json B.json ... --jobs N): each is solved as if alone, N at a time, with\n"
-      "the same options; every output name must contain {scene}, replaced by each scene file's name without\n"
-      "its extension (--csv 'out/{scene}.csv'). Reports come in the order the scenes were given; a scene that\n"
-      "fails does not stop the others; the exit status is the worst of the scenes'.\n" +
+      "the same options; every output name must contain {scene}, each replaced by the scene file's name\n"
+      "without its extension (--csv 'out/{scene}.csv'). All scenes are read first; an output that is a file\n"
+      "any scene reads, or another output, is exit 2 before anything is solved. Reports come in the order the\n"
+      "scenes were given; a scene that fails does not stop the others; the exit status is the worst of the\n"
+      "scenes'.\n" +
       std::string(kExitStatus));
   return {app, [o] { return run_solve(*o); }};
 }
 
 namespace {
 
-/// `rollkin solve` on one scene (o.sweep.scene): assembly, sweep, outputs, summary on `out`, one line per
-/// problem on `err`.
-int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
-  SweepRun run(o.sweep, {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}});
+/// The outputs `rollkin solve` may write: (option, path), path "" for one not given.
+std::vector<std::pair<std::string, std::string>> output_files(const SolveOptions& o) {
+  return {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}};
+}
+
+/// `rollkin solve` on one scene (o.sweep.scene, or `loaded` when already read): assembly, sweep, outputs,
+/// summary on `out`, one line per problem on `err`.
+int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ostream& out, std::ostream& err) {
+  SweepRun run = loaded ? SweepRun(std::move(*loaded), o.sweep, output_files(o)) : SweepRun(o.sweep, output_files(o));
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
   const std::vector<double>& inputs = run.inputs;
@@ -216,18 +223,12 @@ int solve_scene(const SolveOptions& o, std::ostream& out, std::ostream& err) {
   return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
 }
 
-/// The options of each of several scenes: {scene} in every output name replaced by the scene file's stem.
-/// UsageError for an output name without {scene}, two scenes with the same stem, or an output that would
-/// be one of the scene files.
+/// The options of each of several scenes: every {scene} in every output name replaced by the scene file's
+/// stem. UsageError for an output name without {scene}; collisions are checked once the scenes are read
+/// (check_run_outputs).
 std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
   std::vector<SolveOptions> each;
-  std::map<std::string, std::string> stems;  // stem -> scene file
   for (const std::string& file : o.scenes) {
-    const std::string stem = fs::path(file).stem().string();
-    const auto [at, fresh] = stems.emplace(stem, file);
-    if (!fresh)
-      throw UsageError("scenes '" + at->second + "' and '" + file + "' have the same name \"" + stem +
-                       "\": their output files ({scene}) would be the same; rename one");
     SolveOptions one = o;
     one.jobs = 1;  // the scenes share the threads: each formats its own CSV on the thread that solved it
     one.scenes = {file};
@@ -235,44 +236,64 @@ std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
     for (auto [option, path] : {std::pair{"--csv", &one.csv}, {"--plot", &one.plot}, {"--draw", &one.draw},
                                 {"--animate", &one.animate}}) {
       if (path->empty()) continue;
-      const std::size_t at_token = path->find("{scene}");
-      if (at_token == std::string::npos)
+      if (path->find("{scene}") == std::string::npos)
         throw UsageError(std::string(option) + " '" + *path + "': with several scenes each needs its own file; put " +
                          "{scene} in the name, e.g. 'out/{scene}.csv'");
-      path->replace(at_token, 7, stem);
-      for (const std::string& input : o.scenes)
-        if (std::error_code ec; fs::equivalent(*path, input, ec))
-          throw UsageError(std::string(option) + " '" + *path + "' is the scene file '" + input +
-                           "'; inputs are never overwritten, choose another name");
+      *path = with_scene_name(*path, fs::path(file).stem().string());
     }
     each.push_back(std::move(one));
   }
   return each;
 }
 
-/// Several scenes: each solved as alone (solve_scene) on up to o.jobs threads, its report kept and printed in
-/// the order given; a scene's error is reported as the command line would report it alone and does not stop
-/// the others. The exit status is the worst of the scenes'.
+/// What one scene of several reports: its summary and its problems, kept to be printed in the order given.
+struct SceneReport {
+  std::ostringstream out, err;
+  int status = 0;
+};
+
+/// Runs `step` on the scene of report `r`, turning its error into the report the command line would print
+/// for that scene alone.
+template <class Step> void report_errors(const SolveOptions& one, SceneReport& r, Step&& step) {
+  try {
+    step();
+  } catch (const UsageError& e) {
+    r.err << "rollkin: " << one.sweep.scene << ": " << e.what() << "\n";
+    r.status = 2;
+  } catch (...) {
+    r.status = error_status(r.err);
+  }
+}
+
+/// Several scenes: all read first (on up to o.jobs threads), then every output of every scene checked against
+/// every file any scene reads and against each other (check_run_outputs: a collision is exit 2, nothing
+/// solved, nothing written); then each solved as alone (solve_scene), its report kept and printed in the order
+/// given. A scene's own error is reported as the command line would report it alone and does not stop the
+/// others. The exit status is the worst of the scenes'.
 int solve_scenes(const SolveOptions& o) {
   const std::vector<SolveOptions> each = per_scene_options(o);
-  struct Report {
-    std::ostringstream out, err;
-    int status = 0;
-  };
-  std::vector<Report> reports(each.size());
+  std::vector<SceneReport> reports(each.size());
+  std::vector<std::optional<io::Scene>> scenes(each.size());
   run_batch(each.size(), o.jobs, [&](std::size_t k, const std::atomic<bool>&) {
-    Report& r = reports[k];
-    try {
-      r.status = solve_scene(each[k], r.out, r.err);
-    } catch (const UsageError& e) {
-      r.err << "rollkin: " << each[k].sweep.scene << ": " << e.what() << "\n";
-      r.status = 2;
-    } catch (...) {
-      r.status = error_status(r.err);
-    }
+    report_errors(each[k], reports[k], [&] { scenes[k] = read_scene(each[k].sweep.scene); });
+  });
+  std::vector<PlannedScene> plan;
+  for (std::size_t k = 0; k < each.size(); ++k)
+    plan.push_back(PlannedScene{each[k].sweep.scene, scenes[k] ? &*scenes[k] : nullptr, output_files(each[k])});
+  g_doing = "checking the output files";
+  try {
+    check_run_outputs(plan);
+  } catch (...) {  // exit 2 before anything is solved; the scenes that could not be read are named too
+    for (const SceneReport& r : reports) std::cerr << r.err.str();
+    throw;
+  }
+  run_batch(each.size(), o.jobs, [&](std::size_t k, const std::atomic<bool>&) {
+    if (!scenes[k]) return;  // its reading failed: reported
+    SceneReport& r = reports[k];
+    report_errors(each[k], r, [&] { r.status = solve_scene(each[k], std::move(scenes[k]), r.out, r.err); });
   });
   int status = 0;
-  for (const Report& r : reports) {
+  for (const SceneReport& r : reports) {
     std::cout << r.out.str();
     std::cerr << r.err.str();
     status = std::max(status, r.status);
@@ -285,7 +306,7 @@ int run_solve(const SolveOptions& o) {
   if (o.scenes.size() > 1) return solve_scenes(o);
   SolveOptions one = o;
   one.sweep.scene = o.scenes.front();
-  return solve_scene(one, std::cout, std::cerr);
+  return solve_scene(one, std::nullopt, std::cout, std::cerr);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // messages of a sweep's problems and the exit status of an error.
 #include "commands.hpp"
 
+#include "rollkin/io/work_bound.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -78,9 +80,17 @@ void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>*
   add_number(app, "--to", r.to, r.to_text, "last input value (overrides the scene's \"sweep\")");
   add_number(app, "--step", r.step, r.step_text, "step between input values, signed from --from toward --to");
   app.add_option("--max-steps", r.max_steps,
-                 "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps (default 1e7)")
+                 "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps, or of more than N "
+                 "values (default 1e7)")
       ->type_name("N")
-      ->check(number("a positive number of sub-steps (at least 1)", [](double v) { return v >= 1; }));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {  // the rule of rollkin/io/work_bound.hpp, shared with Python
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0') return "expects a number of continuation sub-steps, got \"" + text + "\"";
+            return io::max_steps_problem(v);
+          },
+          "", ""));
 }
 
 namespace {
@@ -97,28 +107,27 @@ io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
   return *s;
 }
 
-/// Bounded work: refuses before solving a request whose estimated continuation sub-steps exceed --max-steps.
-void check_work(const io::Scene& scene, const io::Sweep& sw, const std::vector<double>& inputs, double max_steps) {
-  const double estimate = estimate_substeps(scene.mechanism, scene.guess, sw.driver, inputs);
-  if (estimate <= max_steps) return;
-  std::ostringstream os;
-  os << "the sweep of " << sw.input << " from " << sw.from << " to " << sw.to << " needs an estimated "
-     << std::scientific << std::setprecision(2) << estimate << " continuation sub-steps, above the limit "
-     << max_steps << " (--max-steps); ask for a smaller range (--from/--to), a larger --step (fewer values),"
-     << " or raise the limit with --max-steps";
-  throw UsageError(os.str());
+/// Bounded work (rollkin/io/work_bound.hpp): the sweep's inputs, or a UsageError (exit 2) above --max-steps.
+std::vector<double> bounded_inputs(const io::Scene& scene, const io::Sweep& sw, double max_steps) {
+  try {
+    return io::bounded_inputs(scene, sw, max_steps, "--max-steps");
+  } catch (const io::WorkLimitError& e) {
+    throw UsageError(e.what());
+  }
 }
 
 }  // namespace
 
 SweepRun::SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
-    : scene(read_scene(r.scene)), outputs(files_read(scene)) {
+    : SweepRun(read_scene(r.scene), r, output_files) {}
+
+SweepRun::SweepRun(io::Scene loaded, const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
+    : scene(std::move(loaded)), outputs(files_read(scene)) {
   g_doing = "checking the output files";
   for (const auto& [option, path] : output_files)
     if (!path.empty()) given_[option] = outputs.add(option, path);
   sweep = requested_sweep(scene, r);
-  inputs = io::sweep_inputs(sweep);
-  check_work(scene, sweep, inputs, r.max_steps);
+  inputs = bounded_inputs(scene, sweep, r.max_steps);
 }
 
 void SweepRun::set_output(const std::string& option, const std::function<std::string()>& make_text) {
@@ -126,14 +135,42 @@ void SweepRun::set_output(const std::string& option, const std::function<std::st
   if (it != given_.end()) outputs.set(it->second, make_text());
 }
 
+void SweepRun::omit_output(const std::string& option) {
+  const auto it = given_.find(option);
+  if (it != given_.end()) outputs.omit(it->second);
+}
+
 void SweepRun::stream_output(const std::string& option, std::function<void(io::OutputSink&)> write) {
   const auto it = given_.find(option);
   if (it != given_.end()) outputs.set_writer(it->second, std::move(write));
 }
 
-io::Scene SweepRun::read_scene(const std::string& file) {
+io::Scene read_scene(const std::string& file) {
   g_doing = "reading the scene";
   return io::load_scene(file);
+}
+
+void check_run_outputs(const std::vector<PlannedScene>& run) {
+  std::vector<io::InputFile> inputs;
+  for (const PlannedScene& p : run) {
+    inputs.push_back(io::InputFile{p.file, "the scene file '" + p.file + "'"});
+    if (p.scene)
+      for (const std::string& f : p.scene->files_read)
+        inputs.push_back(io::InputFile{f, "the contour file '" + f + "' read by scene '" + p.file + "'"});
+  }
+  io::OutputSet whole(std::move(inputs));
+  for (const PlannedScene& p : run)
+    for (const auto& [option, path] : p.outputs)
+      if (!path.empty()) whole.add(p.file + "'s " + option, path);
+}
+
+std::string with_scene_name(const std::string& pattern, const std::string& stem) {
+  static const std::string kToken = "{scene}";
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t at; (at = pattern.find(kToken, from)) != std::string::npos; from = at + kToken.size())
+    out += pattern.substr(from, at - from) + stem;
+  return out + pattern.substr(from);
 }
 
 std::vector<std::string> SweepRun::files_read(const io::Scene& scene) {

@@ -79,7 +79,7 @@ struct SweepRequest {
   std::string scene;
   std::optional<double> from, to, step;
   std::string from_text, to_text, step_text;  // as given: the grid is the decimal one (solve/sweep_grid.hpp)
-  double max_steps = 1e7;  // bounded work: largest estimated number of continuation sub-steps
+  double max_steps = 1e7;  // bounded work (rollkin/io/work_bound.hpp): sub-steps and values at most
 };
 
 /// The sweep options; the positional SCENE goes to r.scene, or, when `scenes` is given, one or more of them.
@@ -96,10 +96,16 @@ struct SweepRun {
 
   /// `output_files`: (option, path) of every output the command may write; path "" for one not given.
   SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files);
+  /// The same with the scene already read (`loaded`, read from r.scene): a run of several scenes reads them
+  /// all first, to check every output against every file any of them reads (check_run_outputs).
+  SweepRun(io::Scene loaded, const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files);
 
   /// Sets the content of the output file named by `option`, if the command line gave one (`make_text` is
   /// called only then).
   void set_output(const std::string& option, const std::function<std::string()>& make_text);
+
+  /// The output file named by `option`, if given, is not written after all (io::OutputSet::omit).
+  void omit_output(const std::string& option);
 
   /// The same for an output streamed into its file at commit (io::OutputSet::set_writer).
   void stream_output(const std::string& option, std::function<void(io::OutputSink&)> write);
@@ -107,9 +113,27 @@ struct SweepRun {
  private:
   std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
 
-  static io::Scene read_scene(const std::string& file);
   static std::vector<std::string> files_read(const io::Scene& scene);
 };
+
+/// Reads a scene file (io::load_scene), g_doing saying so.
+io::Scene read_scene(const std::string& file);
+
+/// One scene of a run and the outputs it will write: (option, path) with path "" for one not given. `scene`
+/// is null when the file could not be read (its outputs are still checked: the command line names them).
+struct PlannedScene {
+  std::string file;
+  const io::Scene* scene = nullptr;
+  std::vector<std::pair<std::string, std::string>> outputs;
+};
+
+/// Before anything is solved, every output of a run of several scenes checked in one io::OutputSet against
+/// every file any scene reads (its scene file, point files, SVG, DXF) and against every other output
+/// (resolved paths; device and inode for files that exist): OutputError naming both.
+void check_run_outputs(const std::vector<PlannedScene>& run);
+
+/// `pattern` with every "{scene}" replaced by `stem` (text that `stem` brings in is not searched again).
+std::string with_scene_name(const std::string& pattern, const std::string& stem);
 
 /// Assembles the scene's mechanism into q (sd ready for sweep()). Inconsistent constraints at assembly are a
 /// problem of the scene (sizes, frames, values), not a motion limit: an InputError (exit 2, nothing written).

@@ -61,6 +61,12 @@ std::string layer_name(const std::string& link) {
   return name;
 }
 
+/// Two centres closer than this are one point: round-off of the velocity solution, relative to the
+/// mechanism's size and the centres' distance from the origin.
+bool same_centre(const Vec2<double>& p, const Vec2<double>& q, double length_scale) {
+  return (p - q).norm() <= 1e-9 * (length_scale + p.norm());
+}
+
 /// The SPLINE of one run of centre points (see centrode_dxf).
 io::DxfSpline centrode_spline(const std::vector<Vec2<double>>& run, bool whole_sweep, const std::string& layer) {
   if (run.size() < 4) return io::polyline_spline(run, layer);
@@ -86,12 +92,35 @@ std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCent
       run.clear();
     };
     for (const InstantCentre<double>& c : centres) {
-      if (c.finite) run.push_back(in_a ? c.in_a : c.in_b);
-      else close_run(false);
+      const Vec2<double>& x = in_a ? c.in_a : c.in_b;
+      if (!c.finite) close_run(false);
+      else if (run.empty() || !same_centre(run.back(), x, m.length_scale)) run.push_back(x);
     }
     close_run(run.size() == centres.size());
   }
   return io::dxf_text(splines, ctx.scene.length_unit);
+}
+
+std::string centrode_single_point(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a,
+                                  int b) {
+  const Mechanism<double>& m = ctx.scene.mechanism;
+  const InstantCentre<double>* first = nullptr;
+  for (const InstantCentre<double>& c : centres) {
+    if (!c.finite) continue;
+    if (!first) first = &c;
+    if (!same_centre(first->in_a, c.in_a, m.length_scale) || !same_centre(first->in_b, c.in_b, m.length_scale)) return "";
+  }
+  if (!first) return "";
+  std::string joint = "link '" + m.links[b].name + "' turns about one point of link '" + m.links[a].name + "'";
+  for (const Pair<double>& p : m.pairs)
+    if (p.kind == PairKind::Revolute && ((p.link_a == a && p.link_b == b) || (p.link_a == b && p.link_b == a)))
+      joint = "the links are joined by the revolute '" + p.name + "'";
+  auto point = [&](const Vec2<double>& x, int link) {  // a coordinate within round-off of zero is shown as 0
+    auto coordinate = [&](double v) { return io::format_double(same_centre(x, x - Vec2<double>(v, 0), m.length_scale) ? 0.0 : v); };
+    return "(" + coordinate(x.x()) + ", " + coordinate(x.y()) + ") in link '" + m.links[link].name + "''s frame";
+  };
+  return "the centrode of '" + m.links[b].name + "' relative to '" + m.links[a].name + "' is one point, " +
+         point(first->in_a, a) + " and " + point(first->in_b, b) + ": " + joint;
 }
 
 std::vector<LinkSketch> link_sketches(const Mechanism<double>& m) {

@@ -41,7 +41,14 @@ std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCen
 /// Both centrodes (in link a's frame on layer <a>, in link b's on layer <b>) as DXF SPLINE entities: each run
 /// of consecutive finite centres is the cubic spline through its points (io/dxf_writer.hpp; closed when the
 /// run is the whole sweep and ends where it starts), a run of two or three points the polyline through them.
+/// Consecutive centres that coincide (a dwell) are one point of the spline.
 std::string centrode_dxf(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b);
+
+/// When every finite centre is one point in both links' frames (link b turns about one point of link a: a
+/// revolute joins them), the sentence that says so, naming the point in both frames and the revolute; else "".
+/// Such a centrode is written as its point files; it has no curve to draw as a DXF spline.
+std::string centrode_single_point(const OutputContext& ctx, const std::vector<InstantCentre<double>>& centres, int a,
+                                  int b);
 
 /// SVG drawing of the mechanism at up to four poses spread over the solved ones, one panel per pose at a
 /// common scale (small multiples: no two poses overlap).

@@ -1,5 +1,6 @@
 #include "rollkin/io/output_set.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -78,7 +79,11 @@ bool exchange_names(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-OutputSet::OutputSet(std::vector<std::string> inputs) : inputs_(std::move(inputs)) {}
+OutputSet::OutputSet(std::vector<std::string> inputs) {
+  for (auto& path : inputs) inputs_.push_back(InputFile{std::move(path), {}});
+}
+
+OutputSet::OutputSet(std::vector<InputFile> inputs) : inputs_(std::move(inputs)) {}
 
 OutputSet::~OutputSet() {
   for (const auto& t : temporaries_) ::unlink(t.c_str());
@@ -102,9 +107,10 @@ std::size_t OutputSet::add(const std::string& label, const std::string& path) {
   const std::string target = resolve_target(path);
   const std::string shown = named(label, path) + (target == path ? "" : " (a link to '" + target + "')");
   for (const auto& in : inputs_)
-    if (same_file(target, in))
-      throw OutputError("refusing to write " + shown + ": it is the input file '" + in +
-                        "' read by this run; inputs are never overwritten, choose another name");
+    if (same_file(target, in.path))
+      throw OutputError("refusing to write " + shown + ": it is " +
+                        (in.what.empty() ? "the input file '" + in.path + "' read by this run" : in.what) +
+                        "; inputs are never overwritten, choose another name");
   for (const auto& o : outputs_)
     if (same_file(target, o.target))
       throw OutputError(named(label, path) + " and " + named(o.label, o.path) +
@@ -137,6 +143,8 @@ void OutputSet::set_writer(std::size_t index, std::function<void(OutputSink&)> w
   outputs_.at(index).has_content = true;
 }
 
+void OutputSet::omit(std::size_t index) { outputs_.at(index).omitted = true; }
+
 void OutputSink::flush() {
   const bool ok = write_all(fd_, buffer_);
   if (!ok) throw OutputError("cannot write " + what_ + ": " + reason(errno));
@@ -144,6 +152,7 @@ void OutputSink::flush() {
 }
 
 void OutputSet::commit() {
+  outputs_.erase(std::remove_if(outputs_.begin(), outputs_.end(), [](const Output& o) { return o.omitted; }), outputs_.end());
   for (const auto& o : outputs_)
     if (!o.has_content) throw OutputError("internal error: no content for " + named(o.label, o.path));
   // 1. Every temporary written and closed before any target is touched.

@@ -15,7 +15,7 @@ namespace {
 
 using Wide = __int128;
 
-/// Largest magnitude a scaled integer may have: sums F + k S of two such numbers (k below 1e7) stay far
+/// Largest magnitude a scaled integer may have: F + k S lies between F and the end T, two such numbers, far
 /// inside the 127 bits of Wide.
 const Wide kWideLimit = static_cast<Wide>(1000000000000000000LL) * 1000000000000000000LL;  // 1e36
 
@@ -146,9 +146,11 @@ std::string check_sweep(const Sweep& s) {
   if (span != 0 && (span > 0) != (s.step > 0))
     return "step " + number_text(s.step) + " has the wrong sign for a sweep from " + from + " to " + to +
            "; expected a step with the sign of to - from";
-  if (span / s.step > 1e7)
+  // The grid counts its values exactly (integers below 2^53); how many values a run may ask for is the
+  // bounded-work rule's (io/work_bound.hpp: at most max_steps).
+  if (span / s.step > 9e15)
     return "the sweep from " + from + " to " + to + " by " + number_text(s.step) +
-           " has more than 10 million values; expected a larger step";
+           " has more than 9e15 values, more than a sweep can count; expected a larger step";
   return "";
 }
 

@@ -280,6 +280,116 @@ check "several scenes, an output that is one of the scenes: exit 2, the scene un
   $([ "$rc" -eq 2 ] && [ "$(cksum < jobs/cycloid.json)" = "$before" ] && [ ! -e jobs/paper_fourbar.json ]; echo $?)
 run solve "$EX/paper_fourbar.json" "$EX/cycloid.json" --jobs -1
 check "--jobs -1: exit 2, names the option" $([ "$rc" -eq 2 ] && grep -q -- "--jobs" err.txt; echo $?)
+# ---- no run loses a file: every output of every scene against every file any scene reads, and each other ----
+# (docs/reliability.md, "Outputs"). Scenes a and b each read a point file, an SVG and a DXF contour. For every
+# reader scene s, kind of input k (scene file, point file, SVG, DXF), writer scene t, output option o and name
+# pattern p ({scene} once or twice), s's input of kind k is named so that t's output o expands onto it; the run
+# must exit 2, name the file, change no input (sha256) and write nothing. Then every ordered pair of options of
+# two scenes whose outputs expand to one name ("x" and "x_d"), and a scene given twice.
+collision_scene() {  # collision_scene FILE POINTS SVG DXF: the planet on an arm in a ring, contours from files
+  set -- "$1" "${2##*/}" "${3##*/}" "${4##*/}"  # contour files are named relative to the scene's directory
+  cat > "$1" <<JSON
+{"units": {"length": "m", "angle": "deg"},
+ "links": [
+  {"name": "frame", "ground": true, "contours": [{"name": "ring", "type": "circle", "radius": 4, "material": "outside"}]},
+  {"name": "arm", "contours": [
+    {"name": "plate", "type": "svg", "file": "$3", "path": "contour", "scale": 0.1},
+    {"name": "cam", "type": "dxf", "file": "$4", "layer": "CAM"}]},
+  {"name": "planet", "contours": [{"name": "disk", "type": "samples", "file": "$2", "closed": true}]}],
+ "pairs": [
+  {"name": "O", "type": "revolute", "links": ["frame", "arm"], "variable": "phi", "value": 0},
+  {"name": "P", "type": "revolute", "links": ["arm", "planet"], "at": [{"x": 3}, {}], "variable": "psi", "value": 0},
+  {"name": "C", "type": "rolling", "contours": ["planet.disk", "frame.ring"], "variables": ["u", "v"], "values": [0, 0]}],
+ "inputs": ["O.phi"], "sweep": {"from": 0, "to": 90, "step": 30}}
+JSON
+}
+collision_files() {  # collision_files SCENE POINTS SVG DXF: the scene and its three contour files
+  cp "$SRC/shapes/circle_n0032.txt" "$2"
+  cp "$SRC/tests/fuzz/corpus/svg/document_closed_square.svg" "$3"
+  cp "$SRC/shapes/cam_profile.dxf" "$4"
+  collision_scene "$1" "$2" "$3" "$4"
+}
+mkdir -p collide && cd collide || exit 1
+collision_files a.json a_pts.txt a_sq.svg a_cam.dxf
+collision_files b.json b_pts.txt b_sq.svg b_cam.dxf
+run solve a.json b.json --csv '{scene}-{scene}.csv' --plot '{scene}.svg'
+check "collision set-up: two scenes reading a point file, an SVG and a DXF solve (exit 0); {scene} twice: a-a.csv, b-b.csv" \
+  $([ "$rc" -eq 0 ] && [ -s a-a.csv ] && [ -s b-b.csv ] && [ -s a.svg ] && [ -s b.svg ] && [ ! -e '{scene}-{scene}.csv' ] &&
+    [ ! -e 'a-{scene}.csv' ]; echo $?)
+cd .. || exit 1
+combos=0 combos_bad=0
+for s in a b; do for k in json txt svg dxf; do for t in a b; do for o in --csv --plot --draw --animate; do
+  for p in once twice; do
+    # a scene's own file is hit by '{scene}.json' only: with {scene} twice the name is longer than its stem
+    [ "$k" = json ] && [ "$s" = "$t" ] && [ "$p" = twice ] && continue
+    combos=$((combos + 1))
+    rm -rf combo && mkdir combo && cd combo || exit 1
+    [ "$p" = once ] && stem_t="$t" || stem_t="$t-$t"
+    case "$k" in json) [ "$s" = "$t" ] && suffix=.json || suffix=_s.json ;; txt) suffix=_p.txt ;; svg) suffix=_c.svg ;; dxf) suffix=_c.dxf ;; esac
+    victim="$stem_t$suffix"
+    # the scenes' files; the victim is s's input of kind k, named as t's output o expands
+    for r in a b; do
+      scene="$r.json"; pts="${r}_pts.txt"; svg="${r}_sq.svg"; dxf="${r}_cam.dxf"
+      if [ "$r" = "$s" ]; then
+        case "$k" in json) [ "$s" = "$t" ] || scene="$victim" ;; txt) pts="$victim" ;; svg) svg="$victim" ;; dxf) dxf="$victim" ;; esac
+      fi
+      collision_files "$scene" "$pts" "$svg" "$dxf"
+      eval "scene_$r=\$scene"
+    done
+    [ "$p" = once ] && pattern="{scene}$suffix" || pattern="{scene}-{scene}$suffix"
+    # '{scene}.json' is every scene's own file: the first scene's is named
+    named="$victim"; [ "$k" = json ] && [ "$s" = "$t" ] && named="it is the scene file 'a.json'"
+    others=""
+    for x in --csv --plot --draw --animate; do [ "$x" = "$o" ] || others="$others $x {scene}.out${x#--}"; done
+    sums=$(sha256sum -- * | sort); names=$(ls -a | sort)
+    # shellcheck disable=SC2086
+    run solve "$scene_a" "$scene_b" "$o" "$pattern" $others
+    if ! { [ "$rc" -eq 2 ] && grep -q -- "$named" err.txt && [ "$(sha256sum -- * | grep -v ' [oe][ur][tr].txt$' | sort)" = "$(echo "$sums" | grep -v ' [oe][ur][tr].txt$')" ] &&
+           [ "$(ls -a | grep -v '^[oe][ur][tr].txt$' | sort)" = "$(echo "$names" | grep -v '^[oe][ur][tr].txt$')" ]; }; then
+      combos_bad=$((combos_bad + 1)); echo "     collision not refused: $s's $k input '$victim' vs $t's $o '$pattern' (exit $rc)"
+    fi
+    cd .. || exit 1
+  done
+done; done; done; done
+check "every output vs every input of every scene ($combos combinations): exit 2, the file named, inputs byte-identical, nothing written" \
+  $([ "$combos_bad" -eq 0 ] && [ "$combos" -eq 120 ]; echo $?)
+pairs=0 pairs_bad=0
+for o1 in --csv --plot --draw --animate; do for o2 in --csv --plot --draw --animate; do
+  [ "$o1" = "$o2" ] && continue
+  pairs=$((pairs + 1))
+  rm -rf combo && mkdir combo && cd combo || exit 1
+  collision_files x.json x_pts.txt x_sq.svg x_cam.dxf
+  collision_files x_d.json d_pts.txt d_sq.svg d_cam.dxf
+  echo "an older file" > x_d.out
+  names=$(ls -a | sort)
+  run solve x.json x_d.json "$o1" '{scene}_d.out' "$o2" '{scene}.out'
+  if ! { [ "$rc" -eq 2 ] && grep -q "x_d.json's $o2 'x_d.out' and x.json's $o1 'x_d.out' name the same file" err.txt &&
+         [ "$(cat x_d.out)" = "an older file" ] && [ "$(ls -a | grep -v '^[oe][ur][tr].txt$' | sort)" = "$(echo "$names" | grep -v '^[oe][ur][tr].txt$')" ]; }; then
+    pairs_bad=$((pairs_bad + 1)); echo "     output collision not refused: x.json $o1 vs x_d.json $o2 (exit $rc)"
+  fi
+  cd .. || exit 1
+done; done
+check "two scenes' outputs expanding to one file ($pairs option pairs): exit 2 naming both, nothing written" \
+  $([ "$pairs_bad" -eq 0 ] && [ "$pairs" -eq 12 ]; echo $?)
+rm -rf combo && mkdir -p combo/d1 combo/d2 && cd combo || exit 1
+collision_files d1/a.json d1/a_pts.txt d1/a_sq.svg d1/a_cam.dxf
+collision_files d2/a.json d2/a_pts.txt d2/a_sq.svg d2/a_cam.dxf
+run solve d1/a.json d2/a.json --csv '{scene}.csv'
+check "two scenes with one name in two directories: exit 2, their --csv named, nothing written" \
+  $([ "$rc" -eq 2 ] && grep -q "d2/a.json's --csv 'a.csv' and d1/a.json's --csv 'a.csv' name the same file" err.txt && [ ! -e a.csv ]; echo $?)
+run solve d1/a.json d1/a.json --csv '{scene}.csv'
+check "one scene given twice: exit 2, nothing written" $([ "$rc" -eq 2 ] && grep -q "name the same file" err.txt && [ ! -e a.csv ]; echo $?)
+mkdir -p d3 && collision_files d3/b.json d3/b_pts.txt d3/b_sq.svg d3/b_cam.dxf
+ln d1/a_pts.txt a_link.txt
+run solve d1/a.json d3/b.json --csv '{scene}_link.txt'
+check "an output that is a hard link to another name of a point file: exit 2, the file and its scene named" \
+  $([ "$rc" -eq 2 ] && grep -q "refusing to write d1/a.json's --csv 'a_link.txt': it is the contour file 'd1/a_pts.txt' read by scene 'd1/a.json'" err.txt &&
+    cmp -s d1/a_pts.txt "$SRC/shapes/circle_n0032.txt"; echo $?)
+run solve d1/a.json d3/b.json --csv '../combo/d3/{scene}_pts.txt'
+check "an output through another spelling of b's point file (../combo/d3/b_pts.txt): exit 2, named" \
+  $([ "$rc" -eq 2 ] && grep -q "it is the contour file 'd3/b_pts.txt' read by scene 'd3/b.json'" err.txt &&
+    cmp -s d3/b_pts.txt "$SRC/shapes/circle_n0032.txt"; echo $?)
+cd .. || exit 1
 # One scene: --jobs is the number of threads that format its CSV rows (in blocks of 1024); the file is the
 # same bytes with any number, here past a dead point (not_reached rows) and over several blocks.
 for j in 1 3; do
@@ -488,8 +598,16 @@ check "cam gears through 180 deg follow the closed form (no inaccurate ok)" $(aw
 run solve "$EX/elliptical_gears.json" --to 1e12 --step 1e6 --csv huge.csv
 check "--to 1e12 --step 1e6 on gears is refused (exit 2, estimate and way out named, nothing written)" \
   $([ "$rc" -eq 2 ] && [ ! -e huge.csv ] && grep -q "continuation sub-steps" err.txt && grep -q -- "--max-steps" err.txt; echo $?)
-run solve "$EX/paper_fourbar.json" --max-steps 100 --csv lim.csv
-check "--max-steps 100 refuses the paper sweep (181 sub-steps estimated)" $([ "$rc" -eq 2 ] && [ ! -e lim.csv ] && grep -q "1.81e+02" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --max-steps 160 --csv lim.csv
+check "--max-steps 160 refuses the paper sweep (181 sub-steps estimated)" $([ "$rc" -eq 2 ] && [ ! -e lim.csv ] && grep -q "1.81e+02" err.txt; echo $?)
+run solve "$EX/paper_fourbar.json" --max-steps 150 --csv lim.csv
+check "--max-steps 150 refuses the paper sweep's 151 values before making them" \
+  $([ "$rc" -eq 2 ] && [ ! -e lim.csv ] && grep -q "has 1.51e+02 values, above the limit 1.50e+02 (--max-steps)" err.txt; echo $?)
+for bad in nan inf -inf 0.5 1e400; do
+  run solve "$EX/paper_fourbar.json" --max-steps "$bad" --csv lim.csv
+  check "--max-steps $bad: exit 2, the rule named (a finite number of at least 1)" \
+    $([ "$rc" -eq 2 ] && [ ! -e lim.csv ] && grep -q -- "--max-steps: expects a finite number of continuation sub-steps, at least 1" err.txt; echo $?)
+done
 run solve "$EX/paper_fourbar.json" --max-steps 200 --csv lim.csv
 check "--max-steps 200 lets it run" $([ "$rc" -eq 0 ] && [ -s lim.csv ]; echo $?)
 run solve "$EX/paper_fourbar.json" --max-steps 0

@@ -623,3 +623,164 @@ def test_centrodes_of_the_anti_parallelogram_are_the_ellipses_and_the_clis_dxf(t
     assert np.max(np.abs(points - c["a"])) < 1e-12
     with pytest.raises(ValueError, match="no link \"nope\""):
         scene.centrodes("crank", "nope")
+
+
+# ---- paths: one conversion for every path argument; no file the scene read is ever written over ----------
+
+def scene_copy(tmp_path, name="scene.json"):
+    """A copy of the paper's scene in tmp_path (its contours are analytic: it reads no other file)."""
+    copy = tmp_path / name
+    copy.write_bytes(PAPER.read_bytes())
+    return copy
+
+
+@pytest.mark.parametrize("form", ["str", "bytes", "pathlike"])
+def test_every_path_form_names_the_same_file(form, tmp_path):
+    as_form = {"str": str, "bytes": os.fsencode, "pathlike": pathlib.Path}[form]
+    scene = rollkin.load_scene(as_form(scene_copy(tmp_path)))
+    assert scene.file == str(tmp_path / "scene.json")
+    scene.write(-50, 100, 50, csv=as_form(tmp_path / "out.csv"), plot=as_form(tmp_path / "out.svg"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.csv", "out.svg", "scene.json"]  # no "b'out.csv'"
+    assert (tmp_path / "out.csv").read_text().startswith("O_A.theta2")
+    c = rollkin.load_scene(SRC / "examples" / "antiparallelogram.json").centrodes(
+        "crank", "follower", 0, 90, 45, dxf=as_form(tmp_path / "c.dxf"))
+    assert c["finite"].all() and (tmp_path / "c.dxf").stat().st_size > 0
+    again = rollkin.scene(scene.document(), base_dir=as_form(tmp_path), name=as_form(tmp_path / "named.json"))
+    assert again.file == str(tmp_path / "named.json")
+
+
+def test_a_bytes_path_that_is_not_utf8_is_the_file_of_those_bytes(tmp_path):
+    raw = os.fsencode(tmp_path) + b"/scene\xff.json"
+    with open(raw, "wb") as f:
+        f.write(PAPER.read_bytes())
+    scene = rollkin.load_scene(raw)
+    assert scene.file == os.fsdecode(raw)  # decoded as os.fsdecode does (a surrogate escape)
+    scene.write(-50, 100, 50, csv=os.fsencode(tmp_path) + b"/out\xfe.csv")
+    assert os.path.getsize(os.fsencode(tmp_path) + b"/out\xfe.csv") > 0
+    with pytest.raises(rollkin.OutputError, match="input file"):
+        scene.write(csv=raw)
+
+
+@pytest.mark.parametrize("argument", ["path", "csv", "dxf", "base_dir", "name"])
+def test_a_nul_in_any_path_is_an_error_naming_the_argument(argument, tmp_path):
+    copy = scene_copy(tmp_path)
+    for bad in (str(copy) + "\0.csv", os.fsencode(copy) + b"\0.csv"):
+        scene = rollkin.load_scene(copy)
+        calls = {"path": lambda: rollkin.load_scene(bad),  # the part before the NUL is a scene file
+                 "csv": lambda: scene.write(csv=bad),
+                 "dxf": lambda: rollkin.load_scene(SRC / "examples" / "antiparallelogram.json").centrodes(
+                     "crank", "follower", dxf=bad),
+                 "base_dir": lambda: rollkin.scene(scene.document(), base_dir=bad),
+                 "name": lambda: rollkin.scene(scene.document(), name=bad)}
+        with pytest.raises(ValueError, match="^%s: the path .* contains a NUL character" % argument):
+            calls[argument]()
+    assert copy.read_bytes() == PAPER.read_bytes() and sorted(p.name for p in tmp_path.iterdir()) == ["scene.json"]
+
+
+def test_a_lone_surrogate_or_a_wrong_type_is_an_error_naming_the_argument(tmp_path):
+    with pytest.raises(ValueError, match="^path: the path .* cannot be a file name"):
+        rollkin.load_scene(str(tmp_path) + "/\ud800.json")  # no file system encoding can encode it
+    with pytest.raises(ValueError, match="^csv: the path .* cannot be a file name"):
+        rollkin.load_scene(PAPER).write(csv="\ud800.csv")
+    with pytest.raises(TypeError, match="^csv: expected a path \\(str, bytes or os.PathLike\\), got int"):
+        rollkin.load_scene(PAPER).write(csv=3)
+    with pytest.raises(ValueError, match="^path: the path is empty"):
+        rollkin.load_scene("")
+
+
+def scenes_made_every_way(copy):
+    """The scene of the file `copy`, made each way the module makes scenes, named by what made it."""
+    loaded = rollkin.load_scene(copy)
+    return {"load_scene": loaded,
+            "modified": loaded.modified({"links[1].contours[0].a": 0.6}),
+            "pickle": pickle.loads(pickle.dumps(loaded)),
+            "scene(name=)": rollkin.scene(loaded.document(), name=str(copy)),
+            "scene(name=) modified": rollkin.scene(loaded.document(), name=copy).modified({"sweep.step": 2}),
+            "scene(name=) pickled": pickle.loads(pickle.dumps(rollkin.scene(loaded.document(), name=os.fsencode(copy))))}
+
+
+def test_no_way_of_making_a_scene_lets_write_overwrite_the_file_it_came_from(tmp_path):
+    copy = scene_copy(tmp_path)
+    spellings = [str(copy), os.fsencode(copy), copy, str(tmp_path / "." / "scene.json"),
+                 str(tmp_path / ".." / tmp_path.name / "scene.json")]
+    os.link(copy, tmp_path / "hard.json")
+    os.symlink(copy, tmp_path / "soft.json")
+    spellings += [tmp_path / "hard.json", tmp_path / "soft.json"]
+    for how, scene in scenes_made_every_way(copy).items():
+        for path in spellings:
+            for option in ("csv", "plot", "draw", "animate"):
+                with pytest.raises(rollkin.OutputError, match="input file"):
+                    scene.write(-50, 100, 50, **{option: path})
+            with pytest.raises(rollkin.OutputError, match="input file"):
+                scene.write(-50, 100, 50, csv=tmp_path / "fine.csv", plot=path)
+            assert copy.read_bytes() == PAPER.read_bytes(), (how, path)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["hard.json", "scene.json", "soft.json"]
+
+
+def test_a_dict_scene_never_writes_over_its_contour_files(tmp_path):
+    points = tmp_path / "disk.txt"
+    points.write_bytes((SRC / "shapes" / "circle_n0032.txt").read_bytes())
+    doc = rollkin.load_scene(PAPER).document()
+    doc["links"][2]["contours"][0] = {"name": "rim", "type": "samples", "file": "disk.txt", "closed": True}
+    doc["pairs"][1]["values"], doc["pairs"][2]["values"] = [0, 3.14033], [-0.05, 117]  # chord-length parameters
+    scene = rollkin.scene(doc, base_dir=tmp_path)
+    for made in (scene, scene.modified({"sweep.step": 2}), pickle.loads(pickle.dumps(scene))):
+        with pytest.raises(rollkin.OutputError, match="disk.txt"):
+            made.write(-50, 100, 50, csv=points)
+    assert points.read_bytes() == (SRC / "shapes" / "circle_n0032.txt").read_bytes()
+
+
+# ---- max_steps: one rule with the CLI's --max-steps --------------------------------------------------------
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -1.0, 0.5])
+def test_max_steps_must_be_a_finite_number_of_at_least_one(bad, tmp_path):
+    scene = rollkin.load_scene(PAPER)
+    calls = [lambda: scene.solve(-50, 100, 1, max_steps=bad), lambda: scene.write(-50, 100, 1, max_steps=bad),
+             lambda: scene.centrodes("link1", "link2", max_steps=bad), lambda: scene.reference(max_steps=bad),
+             lambda: rollkin.solve_many([scene], -50, 100, 1, max_steps=bad)]
+    for call in calls:
+        with pytest.raises(ValueError, match="^max_steps: expects a finite number of continuation sub-steps, at least 1"):
+            call()
+    text = "nan" if bad != bad else repr(bad)
+    proc = subprocess.run([CLI, "solve", str(PAPER), "--max-steps", text], capture_output=True, text=True)
+    assert proc.returncode == 2 and "--max-steps: expects a finite number of continuation sub-steps, at least 1" in proc.stderr
+
+
+def test_the_number_of_values_is_bounded_by_max_steps_and_raised_with_it():
+    scene = rollkin.load_scene(PAPER)
+    # 150 / 1e-5 + 1 = 15,000,001 values: above the default 1e7, refused before any value is made
+    with pytest.raises(ValueError, match="1.50e\\+07 values, above the limit 1.00e\\+07 \\(max_steps\\)"):
+        scene.solve(-50, 100, 1e-5)
+    proc = subprocess.run([CLI, "solve", str(PAPER), "--step", "1e-5"], capture_output=True, text=True)
+    assert proc.returncode == 2 and "1.50e+07 values, above the limit 1.00e+07 (--max-steps)" in proc.stderr
+    # 10 values 50 degrees from the assembly pose (theta2 = 0): 50 / 5 degrees + 10 = 20 sub-steps estimated
+    with pytest.raises(ValueError, match="needs an estimated 2.00e\\+01 continuation sub-steps, above the limit 1.90e\\+01"):
+        scene.solve(-50, -41, 1, max_steps=19)
+    assert len(scene.solve(-50, -41, 1, max_steps=21)["status"]) == 10
+
+
+def test_more_than_ten_million_values_run_when_max_steps_allows_them():
+    # 1 + 2e7 values: the old hidden cap of 1e7 values refused any max_steps; the summary-only CLI run is quick
+    proc = subprocess.run([CLI, "solve", str(PAPER), "--from", "-50", "--to", "-48", "--step", "1e-7", "--max-steps", "3e7"],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert "20000001/20000001 poses solved" in proc.stdout
+
+
+# ---- centrodes that are one point ---------------------------------------------------------------------------
+
+def test_the_centrode_of_two_links_joined_by_a_revolute_is_one_point(tmp_path):
+    anti = SRC / "examples" / "antiparallelogram.json"
+    scene = rollkin.load_scene(anti)
+    with pytest.warns(RuntimeWarning, match="is one point, \\(0, 2\\) in link 'crank''s frame .* revolute 'A'"):
+        c = scene.centrodes("crank", "coupler", 0, 360, 10, dxf=tmp_path / "cc.dxf")
+    assert not (tmp_path / "cc.dxf").exists()
+    assert np.max(np.abs(c["a"] - [0, 2])) < 1e-12 and np.max(np.abs(c["b"])) < 1e-12
+    proc = subprocess.run([CLI, "centrodes", str(anti), "--links", "crank", "coupler", "--out", str(tmp_path / "cc"),
+                           "--dxf", str(tmp_path / "cc.dxf")], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert "is one point, (0, 2) in link 'crank''s frame and (0, 0) in link 'coupler''s frame" in proc.stdout
+    assert "--dxf '%s' not written" % (tmp_path / "cc.dxf") in proc.stderr
+    assert not (tmp_path / "cc.dxf").exists()
+    points = np.loadtxt(tmp_path / "cc.crank.txt", skiprows=3)
+    assert points.shape == (361, 2) and np.max(np.abs(points - [0, 2])) < 1e-12

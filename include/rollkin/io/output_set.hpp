@@ -13,7 +13,10 @@
 //
 // add() refuses (OutputError) an empty path, a directory, a path whose directory is missing or not
 // writable, an existing file that is not a regular file, a file the run read (compared by realpath and by
-// device/inode, so hard links and symlinks are caught) and a file already in the set.
+// device/inode, so hard links and symlinks are caught) and a file already in the set. This is the one rule
+// that no run loses a file (docs/reliability.md, "Outputs"): a run of several scenes checks all its outputs
+// in one set holding every file any of its scenes reads (InputFile names the scene that reads each) before
+// it solves anything.
 // An output path that is a symbolic link is written to its target (as cp does); the link stays a link.
 // commit() creates one temporary per output with mkstemp(3) in the target's own directory (so no name can
 // collide with a user's file and rename(2) stays on one file system), writes and closes them all, and only
@@ -60,10 +63,17 @@ class OutputSink {
   std::string buffer_;
 };
 
+/// A file a run reads, and what it is in messages: "the scene file 'a.json'", "the contour file 'b.svg' read
+/// by scene 'a.json'" ("" : "the input file '<path>' read by this run").
+struct InputFile {
+  std::string path, what;
+};
+
 class OutputSet {
  public:
   /// `inputs`: every file the run read (paths as opened); an output resolving to one is refused.
   explicit OutputSet(std::vector<std::string> inputs = {});
+  explicit OutputSet(std::vector<InputFile> inputs);
   ~OutputSet();
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
@@ -78,7 +88,10 @@ class OutputSet {
   /// Output `index` is streamed: commit() calls `write` with the sink of its temporary file.
   void set_writer(std::size_t index, std::function<void(OutputSink&)> write);
 
-  /// Writes every output (all must have been set) all or nothing. Throws OutputError.
+  /// Output `index` is not written after all (there is nothing to write): commit() leaves its file alone.
+  void omit(std::size_t index);
+
+  /// Writes every output (all must have been set or omitted) all or nothing. Throws OutputError.
   void commit();
 
   /// The file an output path is written to: the path itself, or the final target of a symbolic link.
@@ -89,8 +102,9 @@ class OutputSet {
     std::string label, path, target, content;
     std::function<void(OutputSink&)> writer;  // when set, streams the content instead
     bool has_content = false;
+    bool omitted = false;
   };
-  std::vector<std::string> inputs_;
+  std::vector<InputFile> inputs_;
   std::vector<Output> outputs_;
   std::vector<std::string> temporaries_;  // created and not yet renamed (removed by the destructor)
 };

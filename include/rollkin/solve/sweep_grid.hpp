@@ -31,13 +31,13 @@ struct Sweep {
 
 /// The requested input values, in INTERNAL units: from, from + step, ... up to `to` (the decimal grid, see
 /// the file comment), inclusive of `to` when it falls on the grid within 1e-9 of a step. Throws std::invalid_argument for a zero step, a step of the
-/// wrong sign or more than 10 million values.
+/// wrong sign or more than 9e15 values (how many a run may ask for: io/work_bound.hpp, max_steps).
 std::vector<double> sweep_inputs(const Sweep& sweep);
 
 /// The same values in the FILE's units: the double nearest to the decimal from + k step.
 std::vector<double> sweep_values(const Sweep& sweep);
 
-/// Checks a sweep's numbers (step non-zero, with the sign of to - from, finite, not too many values);
+/// Checks a sweep's numbers (step non-zero, with the sign of to - from, finite, at most 9e15 values);
 /// returns an empty string when fine, else what is wrong.
 std::string check_sweep(const Sweep& sweep);
 
