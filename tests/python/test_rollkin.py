@@ -784,3 +784,33 @@ def test_the_centrode_of_two_links_joined_by_a_revolute_is_one_point(tmp_path):
     assert not (tmp_path / "cc.dxf").exists()
     points = np.loadtxt(tmp_path / "cc.crank.txt", skiprows=3)
     assert points.shape == (361, 2) and np.max(np.abs(points - [0, 2])) < 1e-12
+
+
+# ---- Ctrl-C while a scene is read ---------------------------------------------------------------------------
+
+def test_ctrl_c_during_a_long_load_returns_within_a_second(tmp_path):
+    # A unit disk of 2,000,000 samples (docs/python.md: reading is linear, about 0.5 s per million points on an
+    # idle machine): the reading, the spline fit and the checks run on a worker thread that Ctrl-C leaves.
+    n = 2_000_000
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    xy = np.empty(2 * n)
+    xy[0::2], xy[1::2] = np.cos(t), np.sin(t)
+    (tmp_path / "disk.txt").write_text("x y\n" + ("%.9f %.9f\n" * n) % tuple(xy))
+    doc = rollkin.load_scene(PAPER).document()
+    doc["links"][2]["contours"][0] = {"name": "rim", "type": "samples", "file": "disk.txt", "closed": True}
+    (tmp_path / "big.json").write_text(json.dumps(doc))
+    began = time.monotonic()
+    rollkin.load_scene(tmp_path / "big.json")
+    alone = time.monotonic() - began
+    assert alone > 1.3, "the load is too short to tell (%.2f s)" % alone
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    sent = time.monotonic() + 0.3
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            rollkin.load_scene(tmp_path / "big.json")
+        returned = time.monotonic()
+    finally:
+        timer.cancel()
+    assert returned - sent < 1.0, "returned %.3f s after Ctrl-C; the load alone takes %.2f s" % (returned - sent, alone)
+    assert rollkin.load_scene(PAPER).solve(-50, 100, 50)["status"].tolist() == ["ok"] * 4  # works afterwards
