@@ -10,6 +10,12 @@
 namespace rollkin::python {
 namespace {
 
+/// Ctrl-C while a large array or list is converted (with the GIL held, before any worker starts): Python's
+/// signal handlers run every 65536 elements, and their exception (KeyboardInterrupt) propagates.
+void check_signals_every_block(std::size_t i) {
+  if (i % 65536 == 65535 && PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
 // ---- Python values <-> JSON ------------------------------------------------------------------------------
 
 /// A float NumPy array of 1 or 2 dimensions as JSON numbers (nested lists), read straight from its buffer:
@@ -32,6 +38,7 @@ json float_array_json(py::handle v, const std::string& path, const std::string& 
   json out = json::array();
   out.get_ref<json::array_t&>().reserve(static_cast<std::size_t>(rows));
   for (py::ssize_t i = 0; i < rows; ++i) {
+    check_signals_every_block(static_cast<std::size_t>(i));
     if (a.ndim() == 1) {
       out.push_back(number(i, 0));
       continue;
@@ -75,7 +82,10 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
     json out = json::array();
     std::size_t i = 0;
-    for (auto item : v) out.push_back(to_json(item, rollkin::io::index(path, i++), file, depth + 1));
+    for (auto item : v) {
+      check_signals_every_block(i);
+      out.push_back(to_json(item, rollkin::io::index(path, i++), file, depth + 1));
+    }
     return out;
   }
   if (py::isinstance<py::array>(v) && py::array::ensure(v).dtype().kind() == 'f') return float_array_json(v, path, file);
