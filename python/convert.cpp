@@ -52,6 +52,15 @@ json float_array_json(py::handle v, const std::string& path, const std::string& 
 
 }  // namespace
 
+std::string json_text(py::handle v, const std::string& path, const std::string& file) {
+  Py_ssize_t size = 0;
+  const char* utf8 = PyUnicode_AsUTF8AndSize(v.ptr(), &size);
+  if (utf8) return std::string(utf8, static_cast<std::size_t>(size));
+  PyErr_Clear();
+  throw InputError(file, path, "the string " + std::string(py::repr(v)) +
+                                   " holds a lone surrogate, which no JSON text can; expected valid Unicode");
+}
+
 json to_json(py::handle v, const std::string& path, const std::string& file, std::size_t depth) {
   if (depth > rollkin::io::kMaxJsonDepth)
     throw InputError(file, path, "nested deeper than " + std::to_string(rollkin::io::kMaxJsonDepth) + " levels");
@@ -68,13 +77,13 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
     if (!std::isfinite(d)) throw InputError(file, path, "the number " + std::string(py::str(v)) + " is not finite; expected a finite number");
     return d;
   }
-  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::isinstance<py::str>(v)) return json_text(v, path, file);
   if (py::isinstance<py::dict>(v)) {
     json out = json::object();
     for (auto item : py::reinterpret_borrow<py::dict>(v)) {
       if (!py::isinstance<py::str>(item.first))
         throw InputError(file, path, "a key " + std::string(py::repr(item.first)) + " that is not a string; JSON keys are strings");
-      const std::string key = item.first.cast<std::string>();
+      const std::string key = json_text(item.first, path, file);
       out[key] = to_json(item.second, rollkin::io::child(path, key), file, depth + 1);
     }
     return out;

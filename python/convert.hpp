@@ -24,6 +24,10 @@ using io::json;
 /// allows) is an InputError naming `file` and the value's JSON path.
 json to_json(py::handle v, const std::string& path, const std::string& file, std::size_t depth = 1);
 
+/// A Python str as the UTF-8 text of a JSON string; one holding a lone surrogate (which no UTF-8 text can hold)
+/// is an InputError naming `file` and `path`.
+std::string json_text(py::handle v, const std::string& path, const std::string& file);
+
 /// A JSON value as Python objects (dict, list, str, int, float, bool, None).
 py::object to_python(const json& j);
 

@@ -69,7 +69,7 @@ PyScene modified(const PyScene& s, const py::dict& overrides) {
     if (!py::isinstance<py::str>(item.first))
       throw py::type_error("modified(): override keys are JSON paths (str) such as \"links[1].contours[0].a\", got " +
                            std::string(py::repr(item.first)));
-    const std::string path = item.first.cast<std::string>();
+    const std::string path = json_text(item.first, "", file);
     rollkin::io::set_at_path(document, path, to_json(item.second, path, file), file);
   }
   return build(given(std::move(document)), file, s.dir, s.source);

@@ -828,3 +828,16 @@ def test_ctrl_c_during_a_long_load_returns_within_a_second(tmp_path):
     assert outcome == "interrupted" and float(after) < 1.0, \
         "%s %s s after Ctrl-C; the load alone takes %s s" % (outcome, after, alone)
     assert works == "True"  # the module works afterwards
+
+
+def test_a_lone_surrogate_in_a_document_is_an_input_error_at_its_path():
+    doc = rollkin.load_scene(PAPER).document()
+    doc["links"][0]["name"] = "x\ud800"
+    with pytest.raises(rollkin.InputError, match="lone surrogate") as info:
+        rollkin.scene(doc)
+    assert info.value.location == "links[0].name"
+    with pytest.raises(rollkin.InputError, match="lone surrogate") as info:
+        rollkin.load_scene(PAPER).modified({"links[0].name": "a\udcff"})
+    assert info.value.location == "links[0].name"
+    with pytest.raises(rollkin.InputError, match="lone surrogate"):
+        rollkin.load_scene(PAPER).modified({"links[0].n\ud800": 1})
