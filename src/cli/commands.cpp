@@ -8,9 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <iomanip>
 #include <new>
-#include <sstream>
 
 namespace rollkin::cli {
 

@@ -727,6 +727,16 @@ run centrodes "$EX/antiparallelogram.json" --links crank crank --out same
 check "centrodes: the same link twice is exit 2 naming --links" $([ "$rc" -eq 2 ] && grep -q -- "--links" err.txt && [ ! -e same.crank.txt ]; echo $?)
 run centrodes "$EX/antiparallelogram.json" --links crank nolink --out none
 check "centrodes: an unknown link is exit 2 listing the links" $([ "$rc" -eq 2 ] && grep -q '"follower"' err.txt; echo $?)
+# Two links joined by a revolute: the centrode is the joint, one point; said, the point files written (the
+# point at every value: A at (0, 2) in the crank's frame, the coupler's origin), the DXF not, with a line why.
+echo "the user's drawing" > cc.dxf
+run centrodes "$EX/antiparallelogram.json" --links crank coupler --out cc --dxf cc.dxf
+check "centrodes of links joined by a revolute: exit 0, 'is one point' named with the revolute, --dxf not written and why" \
+  $([ "$rc" -eq 0 ] && grep -q "is one point, (0, 2) in link 'crank''s frame and (0, 0) in link 'coupler''s frame: the links are joined by the revolute 'A'" out.txt &&
+    grep -q -- "--dxf 'cc.dxf' not written: a centrode that is one point" err.txt && [ "$(cat cc.dxf)" = "the user's drawing" ]; echo $?)
+check "centrodes of links joined by a revolute: 361 points per file, each the joint to 1e-12" \
+  $(awk 'FNR > 3 && !/^#/ { n++; dx = $1; dy = (FILENAME == "cc.crank.txt") ? $2 - 2 : $2
+      if (dx * dx + dy * dy > 1e-24) bad = 1 } END { exit bad || n != 722 }' cc.crank.txt cc.coupler.txt; echo $?)
 
 # ---- rollkin check: undercut and conformity (docs/analysis.md "Design check") -----------------------------
 run check --help
