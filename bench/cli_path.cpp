@@ -11,11 +11,15 @@
 //   - jobs: eight copies of the scene in one `rollkin solve s1.json ... s8.json --step 0.001` run with --jobs 1
 //     and with --jobs <cores> (wall time; the speed-up against the target >= 0.8 x cores);
 //   - scipy: bench/scipy_paper.py (fsolve with quad arc lengths) with /usr/bin/python3, fewer poses (it takes
-//     about a millisecond each), per pose.
+//     about a millisecond each), per pose;
+//   - outputs: `rollkin solve` over the same range with 10^4, 10^5 and 10^6 poses, --plot --animate and
+//     --csv --plot --animate: the size of each file and the child's peak resident memory (targets: chart
+//     < 2 MB and animation < 5 MB at any number of poses, < 60 MB of memory at 10^6 poses with all three).
 // Medians over --repeats runs (alternating the cases, so that the machine's load drifts evenly). Prints a
 // table with the targets: cli <= 1.0x hand per pose, cli --csv <= 2.5x, peak memory < 40 MB.
 //
 //   rollkin_bench_cli [--rollkin build/rollkin] [--repeats 7] [--scipy-poses 1501] [--no-scipy]
+//                     [--only timing|outputs]
 #include "hand_paper.hpp"
 
 #include "rollkin/io/scene.hpp"
@@ -183,22 +187,66 @@ double scipy_us_per_pose(const std::string& script, int poses, std::string& chec
   return us;
 }
 
+double file_mb(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  return ec ? -1 : static_cast<double>(size) / 1e6;
+}
+
+/// The outputs' sizes and peak memory of `rollkin solve` with `poses` poses over theta2 -50..100.
+void output_rows(const Spawner& spawner, const std::string& rollkin, const std::string& scene_file) {
+  const std::string base = "/tmp/rollkin_bench_out." + std::to_string(getpid());
+  const std::string plot = base + ".svg", page = base + ".html", table = base + ".csv";
+  std::printf("\nOutputs at any size: paper example, theta2 -50..100 deg, one run per case (file sizes in MB, "
+              "peak RSS of the child)\n");
+  std::printf("| poses | outputs | --plot MB | --animate MB | --csv MB | peak RSS MB | s | target |\n"
+              "|---:|---|---:|---:|---:|---:|---:|---|\n");
+  for (const long poses : {10000L, 100000L, 1000000L}) {
+    char step[32];
+    std::snprintf(step, sizeof step, "%.17g", 150.0 / static_cast<double>(poses - 1));
+    for (const bool csv : {false, true}) {
+      std::vector<std::string> args{rollkin, "solve", scene_file, "--from", "-50", "--to", "100", "--step", step,
+                                    "--plot", plot, "--animate", page};
+      if (csv) args.insert(args.end(), {"--csv", table});
+      for (const std::string& f : {plot, page, table}) std::remove(f.c_str());
+      const Child c = spawner.run(args);
+      const double plot_mb = file_mb(plot), page_mb = file_mb(page), csv_mb = csv ? file_mb(table) : 0;
+      const bool sizes_ok = plot_mb >= 0 && plot_mb < 2 && page_mb >= 0 && page_mb < 5;
+      std::string target = std::string(sizes_ok ? "PASS" : "MISS") + " sizes (< 2 MB, < 5 MB)";
+      if (csv && poses == 1000000) target += std::string(", ") + (c.max_rss_mb < 60 ? "PASS" : "MISS") + " memory (< 60 MB)";
+      if (c.status != 0) target += ", exit " + std::to_string(c.status);
+      std::printf("| %ld | %s | %.3f | %.3f | %s | %.1f | %.2f | %s |\n", poses,
+                  csv ? "--csv --plot --animate" : "--plot --animate", plot_mb, page_mb,
+                  csv ? std::to_string(csv_mb).substr(0, 6).c_str() : "", c.max_rss_mb, c.seconds, target.c_str());
+      std::fflush(stdout);
+    }
+  }
+  for (const std::string& f : {plot, page, table}) std::remove(f.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string rollkin = "rollkin", source = ROLLKIN_SOURCE_DIR;
   int repeats = 7, scipy_poses = 1501;
   bool no_scipy = false;
+  std::string only;
   CLI::App app("the CLI path against the hand-coded limit and SciPy (bench/cli_path.cpp)");
   app.add_option("--rollkin", rollkin, "the rollkin executable (default: next to this one)")->type_name("FILE");
   app.add_option("--repeats", repeats, "runs per case (median)")->check(CLI::Range(1, 1000));
   app.add_option("--scipy-poses", scipy_poses, "poses of the SciPy sweep over the same range")->check(CLI::Range(2, 150001));
   app.add_flag("--no-scipy", no_scipy, "skip the SciPy baseline");
+  app.add_option("--only", only, "run one part: timing (the CLI path against the hand-coded limit) or outputs "
+                 "(output sizes and peak memory at 10^4 to 10^6 poses)")->check(CLI::IsMember({"timing", "outputs"}));
   CLI11_PARSE(app, argc, argv);
   const Spawner spawner;  // before anything large is allocated here
   if (rollkin == "rollkin") rollkin = (std::string(argv[0]).find('/') == std::string::npos ? std::string(".")
                                         : std::string(argv[0]).substr(0, std::string(argv[0]).rfind('/'))) + "/rollkin";
   const std::string scene_file = source + "/examples/paper_fourbar.json";
+  if (only == "outputs") {
+    output_rows(spawner, rollkin, scene_file);
+    return 0;
+  }
   const std::string csv = "/tmp/rollkin_bench_cli." + std::to_string(getpid()) + ".csv";
   const std::vector<std::string> plain{rollkin, "solve", scene_file, "--from", "-50", "--to", "100", "--step", "0.001"};
   std::vector<std::string> with_csv = plain;
@@ -315,5 +363,6 @@ int main(int argc, char** argv) {
               *std::min_element(jobs_all.begin(), jobs_all.end()), *std::max_element(jobs_all.begin(), jobs_all.end()),
               speedup, speedup / cores, verdict(speedup >= 0.8 * cores));
   if (bad_status) std::printf("WARNING: %d rollkin runs did not exit 0\n", bad_status);
+  if (only.empty()) output_rows(spawner, rollkin, scene_file);
   return 0;
 }

@@ -1,5 +1,6 @@
 // SVG writers: files are written, well-formed (parsed back with a minimal XML reader: balanced tags, quoted
-// attributes), series names and point counts survive, NaN breaks lines, the drawing fits its content, and
+// attributes), series names survive, point counts below the chart's resolution survive and above it are
+// bounded by the pixel columns with the extremes kept, NaN breaks lines, the drawing fits its content, and
 // atomic writes leave nothing behind on failure.
 #define BOOST_TEST_MODULE io_svg
 #include <boost/test/unit_test.hpp>
@@ -9,6 +10,7 @@
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/svg.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -251,7 +253,8 @@ BOOST_AUTO_TEST_CASE(chart_written_and_well_formed) {
   for (const std::string name : {"theta23", "theta34 <&> \"q\"", "theta5"}) {
     BOOST_TEST_CONTEXT(name) {
       BOOST_REQUIRE(groups.count(name));
-      // One unbroken polyline with all 37 points, and the name in the legend.
+      // One unbroken polyline with all 37 points (below the chart's resolution nothing is reduced), and the
+      // name in the legend.
       const auto sizes = polyline_sizes(els, groups.at(name));
       BOOST_TEST(sizes.size() == 1u);
       if (!sizes.empty()) BOOST_TEST(sizes[0] == x.size());
@@ -311,6 +314,54 @@ BOOST_AUTO_TEST_CASE(nan_breaks_lines) {
   BOOST_TEST(chart.to_svg().find("inf") == std::string::npos);
   // The automatic y range ignores the non-finite values.
   BOOST_TEST(std::isfinite(chart.y_ticks().hi));
+}
+
+BOOST_AUTO_TEST_CASE(long_series_are_drawn_at_the_resolution_with_their_extremes) {
+  // 200,001 points (a fine sweep) with narrow peaks: the chart draws at most 4 points per pixel column of its
+  // plot area (io/decimate.hpp), and the drawn line still reaches the series' highest and lowest values and
+  // starts and ends at its first and last points (pixels computed here from the plot area and the y ticks).
+  const std::size_t n = 200001;
+  std::vector<double> x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = 360.0 * static_cast<double>(i) / static_cast<double>(n - 1);
+    y[i] = 40 * std::sin(x[i] * 0.05) + (i == 12345 ? 75.0 : 0.0) - (i == 150000 ? 90.0 : 0.0);
+  }
+  SvgChart chart(640, 400);
+  chart.add_series("fine", x, y).set_legend(LegendPosition::Outside);
+  const std::string doc = chart.to_svg();
+  BOOST_TEST(doc.size() < 200000u);
+  const auto els = parse_xml(doc);
+  const auto groups = series_groups(els);
+  BOOST_REQUIRE(groups.count("fine"));
+  std::vector<std::pair<double, double>> drawn;
+  for (std::size_t i = 0; i < els.size(); ++i)
+    if (els[i].name == "polyline" && has_ancestor(els, static_cast<int>(i), groups.at("fine")))
+      for (const auto& p : parse_points(els[i].attrs.at("points"))) drawn.push_back(p);
+  double left = 0, top = 0, pw = 0, ph = 0;
+  for (const auto& e : els)
+    if (e.name == "rect" && els[e.parent].name == "clipPath") {
+      left = std::stod(e.attrs.at("x"));
+      top = std::stod(e.attrs.at("y"));
+      pw = std::stod(e.attrs.at("width"));
+      ph = std::stod(e.attrs.at("height"));
+    }
+  BOOST_REQUIRE(pw > 0);
+  BOOST_TEST(drawn.size() <= 4 * static_cast<std::size_t>(std::ceil(pw)));
+  BOOST_TEST(drawn.size() >= static_cast<std::size_t>(pw));
+  const Ticks xt = chart.x_ticks(), yt = chart.y_ticks();
+  auto X = [&](double v) { return left + (v - xt.lo) / (xt.hi - xt.lo) * pw; };
+  auto Y = [&](double v) { return top + ph - (v - yt.lo) / (yt.hi - yt.lo) * ph; };
+  double highest = 1e300, lowest = -1e300;  // pixel y grows downwards
+  for (const auto& p : drawn) {
+    highest = std::min(highest, p.second);
+    lowest = std::max(lowest, p.second);
+  }
+  BOOST_TEST(std::abs(highest - (Y(*std::max_element(y.begin(), y.end())))) <= 0.006);  // px, written with 2 decimals
+  BOOST_TEST(std::abs(lowest - (Y(*std::min_element(y.begin(), y.end())))) <= 0.006);
+  BOOST_TEST(std::abs(drawn.front().first - (X(x.front()))) <= 0.006);
+  BOOST_TEST(std::abs(drawn.front().second - (Y(y.front()))) <= 0.006);
+  BOOST_TEST(std::abs(drawn.back().first - (X(x.back()))) <= 0.006);
+  BOOST_TEST(std::abs(drawn.back().second - (Y(y.back()))) <= 0.006);
 }
 
 BOOST_AUTO_TEST_CASE(fixed_ranges_steps_and_errors) {

@@ -2,6 +2,7 @@
 
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/csv.hpp"
+#include "rollkin/io/decimate.hpp"
 #include "rollkin/io/svg.hpp"
 #include "rollkin/io/units.hpp"
 
@@ -84,30 +85,35 @@ std::string transform_of(const SE2<double>& pose) {
   return "translate(" + num(c.x()) + " " + num(c.y()) + ") rotate(" + num(c.z()) + ")";
 }
 
-/// Everything that moves, at every pose with values (has_pose()): link poses and contact points.
+/// The frames of the page (io::pick_frames: every pose of a sweep of up to io::kAnimationFrames, else as many
+/// evenly spaced plus the poses where the status changes) and everything that moves at each frame whose pose
+/// has values (has_pose()): link poses and contact points.
 struct Frames {
-  std::vector<bool> has;                             // per pose
-  std::vector<std::vector<SE2<double>>> links;       // per pose, per link: world pose
-  std::vector<std::vector<Eigen::Vector2d>> contacts;  // per pose, per contact pair: world point
+  std::vector<std::size_t> pose;                       // per frame: the pose (CSV row) it shows
+  std::vector<bool> has;                               // per frame
+  std::vector<std::vector<SE2<double>>> links;         // per frame, per link: world pose
+  std::vector<std::vector<Eigen::Vector2d>> contacts;  // per frame, per contact pair: world point
 };
 
 Frames frames_of(const OutputContext& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
+  const SweepResult<double>& result = ctx.result;
   KinematicsData<double> kin(m);
   Frames f;
-  for (const SweepPose<double>& pose : ctx.result.poses) {
-    f.has.push_back(pose.report.has_pose());
+  f.pose = io::pick_frames(result.size(), [&](std::size_t k) { return static_cast<int>(result.status(k)); });
+  for (const std::size_t k : f.pose) {
+    f.has.push_back(result.has_pose(k));
     f.links.emplace_back();
     f.contacts.emplace_back();
     if (!f.has.back()) continue;
-    evaluate_pairs<double>(m, pose.q, nullptr, 1, kin);  // as csv_text: the same link poses
+    evaluate_pairs<double>(m, result.q(k), nullptr, 1, kin);  // as csv_text: the same link poses
     f.links.back() = link_poses(m, kin);
     f.contacts.back() = contact_points(m, kin, f.links.back());
   }
   return f;
 }
 
-/// World box (xmin, ymin, xmax, ymax) of the links' drawings and the contact points over all poses with
+/// World box (xmin, ymin, xmax, ymax) of the links' drawings and the contact points over all frames with
 /// values, and of the ground's drawing (in the world frame: link_poses()) also when no pose has values.
 Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f, int ground) {
   const double inf = std::numeric_limits<double>::infinity();
@@ -140,7 +146,7 @@ struct LinkCentrodes {
   std::vector<std::vector<Eigen::Vector2d>> fixed, moving;  // per link (empty for the ground)
 };
 
-LinkCentrodes centrodes_of(const OutputContext& ctx, const Eigen::Vector4d& view) {
+LinkCentrodes centrodes_of(const OutputContext& ctx, const Frames& f, const Eigen::Vector4d& view) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   KinematicsData<double> kin(m);
   LinkCentrodes out;
@@ -148,9 +154,17 @@ LinkCentrodes centrodes_of(const OutputContext& ctx, const Eigen::Vector4d& view
   out.moving.resize(m.links.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Eigen::Vector2d none(nan, nan);
-  for (std::size_t l = 0; l < m.links.size(); ++l) {
-    if (static_cast<int>(l) == m.ground) continue;
-    for (const InstantCentre<double>& c : centrodes(m, kin, ctx.result, m.ground, static_cast<int>(l))) {
+  // At the frames' poses (as centrodes() computes them at every pose of a sweep).
+  for (std::size_t k = 0; k < f.pose.size(); ++k) {
+    std::vector<Twist<double>> twists;
+    if (f.has[k]) {
+      evaluate_pairs<double>(m, ctx.result.q(f.pose[k]), nullptr, 1, kin);
+      twists = link_twists<double>(m, kin, f.links[k], ctx.result.qdot(f.pose[k]));
+    }
+    for (std::size_t l = 0; l < m.links.size(); ++l) {
+      if (static_cast<int>(l) == m.ground) continue;
+      const InstantCentre<double> c = f.has[k] ? instant_centre(f.links[k], twists, m.ground, static_cast<int>(l), m.length_scale)
+                                               : InstantCentre<double>();
       const bool shown = c.finite && c.world.x() >= view(0) && c.world.y() >= view(1) && c.world.x() <= view(2) &&
                          c.world.y() <= view(3);
       out.fixed[l].push_back(shown ? Eigen::Vector2d(c.in_a) : none);
@@ -167,15 +181,16 @@ std::string json_numbers(const std::vector<double>& v) {
   return out + "]";
 }
 
-/// The data of the script: the input column (full precision, as in the CSV), per pose a status index and
-/// the flat tables of link poses and contact points (null for a pose without values).
+/// The data of the script, per frame: the pose (CSV row, from 0), the input column (full precision, as in
+/// the CSV), a status index and the flat tables of link poses and contact points (null for a pose without
+/// values).
 std::string page_data(const OutputContext& ctx, const Frames& f, std::size_t start) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   std::vector<std::string> texts, kinds;
   std::map<SolveStatus, std::size_t> index;
-  std::string inputs, status, poses, contacts;
+  std::string rows, inputs, status, poses, contacts;
   for (std::size_t k = 0; k < f.has.size(); ++k) {
-    const SolveStatus s = ctx.result.poses[k].report.status;
+    const SolveStatus s = ctx.result.status(f.pose[k]);
     if (!index.count(s)) {
       index[s] = texts.size();
       const std::string name = to_string(s);
@@ -191,7 +206,8 @@ std::string page_data(const OutputContext& ctx, const Frames& f, std::size_t sta
       }
     }
     const std::string sep = k ? "," : "";
-    inputs += sep + io::format_double(input_column(ctx, k));
+    rows += sep + std::to_string(f.pose[k]);
+    inputs += sep + io::format_double(input_column(ctx, f.pose[k]));
     status += sep + std::to_string(index[s]);
     std::vector<double> row, points;
     for (const auto& p : f.links[k]) {
@@ -209,7 +225,8 @@ std::string page_data(const OutputContext& ctx, const Frames& f, std::size_t sta
   };
   return "{\"links\":" + std::to_string(m.links.size()) + ",\"contacts\":" + std::to_string(contact_pairs(m).size()) +
          ",\"ground\":" + std::to_string(m.ground) + ",\"start\":" + std::to_string(start) + ",\n\"status_texts\":" +
-         strings(texts) + ",\"status_kinds\":" + strings(kinds) + ",\n\"inputs\":[" + inputs + "],\n\"status\":[" +
+         strings(texts) + ",\"status_kinds\":" + strings(kinds) + ",\n\"rows\":[" + rows + "],\n\"inputs\":[" + inputs +
+         "],\n\"status\":[" +
          status + "],\n\"poses\":[" + poses + "],\n\"contact_points\":[" + contacts + "]}";
 }
 
@@ -270,7 +287,7 @@ const char* const kScript = R"JS(
     }
     setHidden(t === null);
     valueOut.textContent = String(d.inputs[i]);
-    indexOut.textContent = String(i + 1);
+    indexOut.textContent = String(d.rows[i] + 1);
     statusOut.textContent = d.status_texts[d.status[i]];
     statusOut.className = d.status_kinds[d.status[i]];
     slider.value = String(i);
@@ -317,7 +334,7 @@ struct Page {
   std::vector<LinkSketch> sketches;
   Frames f;
   std::vector<int> contacts;  // the contact pairs, in the order of the contact points
-  std::size_t start = 0;      // the pose shown first: the first with values
+  std::size_t start = 0;      // the frame shown first: the first with values
   bool shown = false;         // ... and it has values
   double scale = 1, ox = 0, oy = 0;  // world to pixels (y up): pixel = (ox + scale x, oy - scale y)
   double px = 1;                     // one pixel in world units (marker sizes)
@@ -339,20 +356,24 @@ struct Page {
   }
 };
 
-/// The page's head, title and controls: play/pause, the slider, the input value, the status, the toggles.
+/// The page's head, title and controls: play/pause, the slider over the frames, the input value, the pose
+/// (CSV row) shown, the status, the toggles.
 std::string head_and_controls(const Page& p) {
-  const std::size_t n = p.f.has.size();
+  const std::size_t n = p.f.has.size(), poses = p.ctx.result.size();
   const std::string name = io::xml_escape(base_name(p.ctx.scene.file));
   const std::string unit = io::xml_escape(input_column_unit(p.ctx));
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>" + name +
          ": animation (rollkin)</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
-         std::to_string(n) + " poses of the sweep of " + io::xml_escape(p.ctx.sweep.input) + "</h1>\n" +
+         std::to_string(poses) + " poses of the sweep of " + io::xml_escape(p.ctx.sweep.input) +
+         (n < poses ? ", " + std::to_string(n) + " of them shown (evenly spaced, and both sides of every status change)" : "") +
+         "</h1>\n" +
          "<div id=\"controls\">\n<button id=\"play\" type=\"button\" aria-pressed=\"false\">Play</button>\n" +
          "<input id=\"pose\" type=\"range\" min=\"0\" max=\"" + std::to_string(n ? n - 1 : 0) + "\" step=\"1\" value=\"" +
          std::to_string(p.start) + "\" aria-label=\"pose\"/>\n<span><span id=\"input-name\">" +
          io::xml_escape(p.m.variables[p.ctx.sweep.variable].name) + "</span> = <output id=\"input-value\">" +
-         (n ? io::format_double(input_column(p.ctx, p.start)) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
-         "</span>\n<span>pose <output id=\"pose-index\">" + std::to_string(p.start + 1) + "</output>/" + std::to_string(n) +
+         (n ? io::format_double(input_column(p.ctx, p.f.pose[p.start])) : "") + "</output>" + (unit.empty() ? "" : " " + unit) +
+         "</span>\n<span>pose <output id=\"pose-index\">" + (n ? std::to_string(p.f.pose[p.start] + 1) : "0") + "</output>/" +
+         std::to_string(poses) +
          "</span>\n<output id=\"status\"></output>\n" +
          (p.contacts.empty() ? "" : "<label><input id=\"show-traces\" type=\"checkbox\" checked=\"checked\"/> contact paths</label>\n") +
          "<label><input id=\"show-centrodes\" type=\"checkbox\"/> centrodes</label>\n</div>\n";
@@ -426,7 +447,7 @@ std::string contact_markers(const Page& p) {
 
 /// The inline SVG: one world group (y up) holding the contact paths, the link groups and the contact points.
 std::string drawing(const Page& p) {
-  const LinkCentrodes centrodes = centrodes_of(p.ctx, p.around);
+  const LinkCentrodes centrodes = centrodes_of(p.ctx, p.f, p.around);
   const std::string w = std::to_string(kWidth), h = std::to_string(kHeight);
   std::string svg = "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w +
                     " " + h + "\">\n<rect width=\"" + w + "\" height=\"" + h + "\" fill=\"#ffffff\"/>\n<g transform=\"matrix(" +

@@ -3,9 +3,11 @@
 #include "output.hpp"
 
 #include "rollkin/analysis.hpp"
+#include "rollkin/io/decimate.hpp"
 #include "rollkin/io/svg.hpp"
 #include "rollkin/io/units.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <string>
@@ -56,46 +58,77 @@ struct ChartSpec {
   std::vector<int> link;  // per series, the link it charts (angular accelerations and jerks); else empty
 };
 
-/// y[c][k]: the values of series k of chart c, one per pose (NaN where not solved), in one pass over the
-/// poses: each is analysed once and not kept. turns[l]: link l's angular acceleration is not zero at some
-/// pose.
-void chart_values(const OutputContext& ctx, const std::vector<ChartSpec>& specs,
-                  std::vector<std::vector<std::vector<double>>>& y, std::vector<bool>& turns) {
+/// The x axis of every chart: the input column (output units) of each pose, and its range.
+struct InputAxis {
+  const SweepResult<double>& result;
+  double scale, lo, hi;
+  InputAxis(const OutputContext& ctx)
+      : result(ctx.result), scale(out_scale(ctx.scene.mechanism, ctx.sweep.variable)),
+        lo(std::numeric_limits<double>::infinity()), hi(-lo) {
+    for (std::size_t r = 0; r < result.size(); ++r) {
+      lo = std::min(lo, at(r));
+      hi = std::max(hi, at(r));
+    }
+  }
+  double at(std::size_t r) const { return result.input(r) * scale; }
+  /// A series of a chart `width` pixels wide, reduced to its columns as it is read (io/decimate.hpp): the
+  /// charts hold a few points per pixel column whatever the number of poses (SvgChart reduces again to its
+  /// exact plot area).
+  io::SeriesReducer series(int width) const { return io::SeriesReducer(lo, hi, width); }
+};
+
+/// A reduced series as a chart series (name and colour set by the caller).
+io::ChartSeries chart_series(io::SeriesReducer& reduced) {
+  reduced.finish();
+  io::ChartSeries s;
+  s.x = reduced.x();
+  s.y = reduced.y();
+  return s;
+}
+
+/// series[c][k]: series k of chart c, one point per pose (NaN where not solved) reduced to the chart's
+/// columns, in one pass over the poses: each is analysed once and not kept. turns[l]: link l's angular
+/// acceleration is not zero at some pose.
+void chart_values(const OutputContext& ctx, const InputAxis& axis, const std::vector<ChartSpec>& specs, int width,
+                  std::vector<std::vector<io::SeriesReducer>>& series, std::vector<bool>& turns) {
   const Mechanism<double>& m = ctx.scene.mechanism;
-  const std::size_t poses = ctx.result.size();
-  y.assign(specs.size(), {});
-  for (std::size_t c = 0; c < specs.size(); ++c) y[c].assign(specs[c].names.size(), std::vector<double>(poses, kNaN));
+  series.assign(specs.size(), {});
+  for (std::size_t c = 0; c < specs.size(); ++c) series[c].assign(specs[c].names.size(), axis.series(width));
   turns.assign(m.links.size(), false);
   AnalysisData<double> data(m);
-  for (std::size_t r = 0; r < poses; ++r) {
-    if (!ctx.result.has_pose(r)) continue;
+  for (std::size_t r = 0; r < ctx.result.size(); ++r) {
+    const double x = axis.at(r);
+    if (!ctx.result.has_pose(r)) {
+      for (auto& chart : series)
+        for (io::SeriesReducer& s : chart) s.add(x, kNaN);
+      continue;
+    }
     const PoseAnalysis<double> a = analyse_pose(m, ctx.result.q(r), ctx.result.qdot(r), data);
     for (std::size_t c = 0; c < specs.size(); ++c)
-      for (std::size_t k = 0; k < specs[c].names.size(); ++k) y[c][k][r] = specs[c].value(a, k);
+      for (std::size_t k = 0; k < specs[c].names.size(); ++k) series[c][k].add(x, specs[c].value(a, k));
     for (std::size_t l = 0; l < m.links.size(); ++l) turns[l] = turns[l] || a.angular_acceleration[l] != 0.0;
   }
 }
 
 /// The charts of specs with their values; a link's series only where the link turns (chart_values), a chart
 /// with no series left out.
-std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const std::vector<double>& x,
+std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const InputAxis& axis,
                                             const std::vector<ChartSpec>& specs) {
-  std::vector<std::vector<std::vector<double>>> y;
+  const int width = 760, height = 360;
+  std::vector<std::vector<io::SeriesReducer>> series;
   std::vector<bool> turns;
-  chart_values(ctx, specs, y, turns);
+  chart_values(ctx, axis, specs, width, series, turns);
   std::vector<io::SvgChart> charts;
   for (std::size_t c = 0; c < specs.size(); ++c) {
     const ChartSpec& spec = specs[c];
-    io::SvgChart chart(760, 360);
+    io::SvgChart chart(width, height);
     chart.set_title(base_name(ctx.scene.file) + ": " + spec.title).set_x_label(axis_label(ctx, ctx.sweep.variable))
         .set_y_label(spec.y_label).set_legend(io::LegendPosition::Outside);
     std::size_t shown = 0;
     for (std::size_t k = 0; k < spec.names.size(); ++k) {
       if (!spec.link.empty() && !turns[static_cast<std::size_t>(spec.link[k])]) continue;
-      io::ChartSeries s;
+      io::ChartSeries s = chart_series(series[c][k]);
       s.name = spec.names[k];
-      s.x = x;
-      s.y = std::move(y[c][k]);
       s.color = io::palette_color(shown++);
       chart.add_series(std::move(s));
     }
@@ -105,7 +138,7 @@ std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const std:
 }
 
 /// The --analysis charts (docs/analysis.md), in the CSV's output units.
-std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::vector<double>& x) {
+std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const InputAxis& axis) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const double degrees = io::from_radians(1.0, kOutputAngle);
   const double in_scale = out_scale(m, ctx.sweep.variable);
@@ -178,7 +211,7 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
                        return a.qdddot(stroke_variable[k]) / (in_scale * in_scale * in_scale);
                      }});
   }
-  return charts_from_specs(ctx, x, specs);
+  return charts_from_specs(ctx, axis, specs);
 }
 
 }  // namespace
@@ -186,28 +219,36 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const std::v
 std::string plot_svg(const OutputContext& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;
-  const double in_scale = out_scale(m, input);
-  std::vector<double> x;
-  for (const auto& p : ctx.result.poses) x.push_back(p.input * in_scale);
-  (void)ctx.inputs;
+  const InputAxis axis(ctx);
   const std::string name = base_name(ctx.scene.file);
 
-  io::SvgChart angles(760, 460), lengths(760, 460);
+  const int width = 760, height = 460;
+  io::SvgChart angles(width, height), lengths(width, height);
   angles.set_title(name + ": pair angles against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
       .set_y_label(std::string("angle [") + io::unit_label(kOutputAngle) + "]").set_legend(io::LegendPosition::Outside);
   lengths.set_title(name + ": contact parameters against " + m.variables[input].name).set_x_label(axis_label(ctx, input))
       .set_y_label("length [" + ctx.scene.length_unit + "] or parameter").set_legend(io::LegendPosition::Outside);
+  // Every variable but the input, read in one pass over the poses into its reduced series.
+  std::vector<int> charted;
+  std::vector<io::SeriesReducer> series;
+  for (int i = 0; i < m.variable_count(); ++i)
+    if (i != input) {
+      charted.push_back(i);
+      series.push_back(axis.series(width));
+    }
+  for (std::size_t r = 0; r < ctx.result.size(); ++r) {
+    const bool solved = ctx.result.has_pose(r);
+    const auto q = ctx.result.q(r);
+    for (std::size_t j = 0; j < charted.size(); ++j)
+      series[j].add(axis.at(r), solved ? q(charted[j]) * out_scale(m, charted[j]) : kNaN);
+  }
   std::size_t n_angles = 0, n_lengths = 0;
-  for (int i = 0; i < m.variable_count(); ++i) {
-    if (i == input) continue;
-    std::vector<double> y;
-    for (const auto& p : ctx.result.poses) y.push_back(p.report.has_pose() ? p.q(i) * out_scale(m, i) : kNaN);
+  for (std::size_t j = 0; j < charted.size(); ++j) {
+    const int i = charted[j];
     const bool is_angle = m.variables[i].kind == ParamKind::Angle;
     const std::size_t k = is_angle ? n_angles++ : n_lengths++;
-    io::ChartSeries s;
+    io::ChartSeries s = chart_series(series[j]);
     s.name = m.variables[i].name;
-    s.x = x;
-    s.y = std::move(y);
     s.color = io::palette_color(static_cast<std::size_t>(i));
     if (k >= 10) s.dash = "6 3";
     (is_angle ? angles : lengths).add_series(std::move(s));
@@ -216,7 +257,7 @@ std::string plot_svg(const OutputContext& ctx) {
   if (n_angles > 0) charts.push_back(std::move(angles));
   if (n_lengths > 0) charts.push_back(std::move(lengths));
   if (ctx.analysis)
-    for (io::SvgChart& c : analysis_charts(ctx, x)) charts.push_back(std::move(c));
+    for (io::SvgChart& c : analysis_charts(ctx, axis)) charts.push_back(std::move(c));
   if (charts.empty()) charts.push_back(std::move(angles));  // a scene whose only variable is the input
   return stack_charts(charts);
 }

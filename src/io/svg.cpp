@@ -1,6 +1,7 @@
 #include "rollkin/io/svg.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/decimate.hpp"
 #include "rollkin/io/input_error.hpp"
 
 #include <algorithm>
@@ -396,24 +397,29 @@ std::string SvgChart::to_svg() const {
       << "\" stroke-width=\"" << num(s.stroke_width) << "\" fill=\"none\" stroke-linejoin=\"round\"";
     if (!s.dash.empty()) o << " stroke-dasharray=\"" << xml_escape(s.dash) << "\"";
     o << ">\n";
-    const auto runs = finite_runs(s.x.size(), [&](std::size_t i) { return std::isfinite(s.x[i]) && std::isfinite(s.y[i]); });
+    // The points a pixel column can show (io/decimate.hpp): a series of any length draws in bounded size.
+    SeriesReducer reduced(xt.lo, xt.hi, static_cast<int>(std::ceil(pw)));
+    for (std::size_t i = 0; i < s.x.size(); ++i) reduced.add(s.x[i], s.y[i]);
+    reduced.finish();
+    const std::vector<double>&sx = reduced.x(), &sy = reduced.y();
+    const auto runs = finite_runs(sx.size(), [&](std::size_t i) { return std::isfinite(sx[i]) && std::isfinite(sy[i]); });
     for (const auto& r : runs) {
       if (r.second - r.first == 1) {  // isolated point: a dot, since a one-point polyline is invisible
-        o << "<circle cx=\"" << px(X(s.x[r.first])) << "\" cy=\"" << px(Y(s.y[r.first])) << "\" r=\""
+        o << "<circle cx=\"" << px(X(sx[r.first])) << "\" cy=\"" << px(Y(sy[r.first])) << "\" r=\""
           << num(s.stroke_width) << "\" fill=\"" << xml_escape(color) << "\" stroke=\"none\"/>\n";
         continue;
       }
       o << "<polyline points=\"";
       for (std::size_t i = r.first; i < r.second; ++i) {
         if (i > r.first) o << ' ';
-        o << px(X(s.x[i])) << ',' << px(Y(s.y[i]));
+        o << px(X(sx[i])) << ',' << px(Y(sy[i]));
       }
       o << "\"/>\n";
     }
     if (s.markers)
       for (const auto& r : runs)
         for (std::size_t i = r.first; i < r.second; ++i)
-          o << "<circle class=\"marker\" cx=\"" << px(X(s.x[i])) << "\" cy=\"" << px(Y(s.y[i])) << "\" r=\""
+          o << "<circle class=\"marker\" cx=\"" << px(X(sx[i])) << "\" cy=\"" << px(Y(sy[i])) << "\" r=\""
             << num(2 * s.stroke_width) << "\" fill=\"#ffffff\" stroke-dasharray=\"none\"/>\n";
     o << "</g>\n";
   }

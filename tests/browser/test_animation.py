@@ -9,7 +9,8 @@ is the independent truth: the input value the page shows and the transforms it g
 must be that pose's row (input column; <link>.x, <link>.y, <link>.angle to the 7 significant digits the page
 stores). Also checked: the page is one file under 1 MB that loads nothing (no URL, no src/href, and the
 browser's resource timing is empty), the slider moves the links, play advances the poses and pause stops
-them, unsolved poses show their status with the moving links hidden, names with markup and control characters
+them, a long sweep is shown in a bounded number of frames that are each their CSV row and include both rows of
+every status change, unsolved poses show their status with the moving links hidden, names with markup and control characters
 neither break the page nor run script, and the browser log has no SEVERE entry (JavaScript errors).
 Prints one line per check and "N passed, M failed" last; exit status 1 when a check fails.
 """
@@ -201,6 +202,43 @@ def main():
                                                 [unsolved[0]])
         check("wide sweep: the contact points are hidden at an unsolved pose", contacts_hidden == "hidden")
         check("no SEVERE entry in the browser log (wide sweep)", not severe_log(driver), str(severe_log(driver)))
+
+        # ---- a long sweep: bounded frames, evenly spaced, both sides of every status change -------------------
+        # 19,001 poses beyond the motion limits: the page shows 2000 evenly spaced poses and the poses on both
+        # sides of each status change (docs/reliability.md, "Outputs at any size"); every frame is its CSV row.
+        rc, fine = solve(EXAMPLE, "fine.html", "fine.csv", "--from", "-70", "--to", "120", "--step", "0.01")
+        size = os.path.getsize("fine.html")
+        print("     page size %d bytes for %d poses" % (size, len(fine)))
+        check("long sweep: exit 1, 19001 rows, page under 1 MB", rc == 1 and len(fine) == 19001 and size < 1_000_000,
+              "exit %d, %d rows, %d bytes" % (rc, len(fine), size))
+        driver.get("file://" + os.path.abspath("fine.html"))
+        frames = int(driver.execute_script("return document.getElementById('pose').max;")) + 1
+        changes = [k for k in range(1, len(fine)) if fine[k]["status"] != fine[k - 1]["status"]]
+        check("long sweep: between 2000 and 2000 + 2 x changes frames", 2000 <= frames <= 2000 + 2 * len(changes) < len(fine),
+              "%d frames, %d changes" % (frames, len(changes)))
+        seen = driver.execute_script(READ_POSES, list(range(frames)))
+        shown = [int(s["index"]) - 1 for s in seen]
+        bad = []
+        for s, row in zip(seen, shown):
+            truth = fine[row]
+            if float(s["value"]) != float(truth["O_A.theta2"]) or not s["status"].startswith(truth["status"]):
+                bad.append((row, s["value"], s["status"]))
+            elif truth["status"] == "ok" and transform_errors(s, truth):
+                bad.append((row, transform_errors(s, truth)))
+        check("long sweep: every frame shows its CSV row (input, status, link transforms)", not bad, str(bad[:3]))
+        spacing = math.ceil((len(fine) - 1) / 1999)
+        check("long sweep: frames in row order from the first to the last row, no gap above (n - 1) / 1999 rows",
+              shown == sorted(set(shown)) and shown[0] == 0 and shown[-1] == len(fine) - 1 and
+              max(b - a for a, b in zip(shown, shown[1:])) <= spacing, "largest gap %d" % max(b - a for a, b in zip(shown, shown[1:])))
+        missing = [k for k in changes if k - 1 not in shown or k not in shown]
+        check("long sweep: both rows of every status change are frames (%d changes)" % len(changes), changes and not missing,
+              str(missing[:5]))
+        check("long sweep: the title says how many poses and frames",
+              "19001 poses of the sweep of " in driver.find_element("tag name", "h1").text and
+              driver.find_element("tag name", "h1").text.endswith(", %d of them shown (evenly spaced, and both sides of "
+                                                                  "every status change)" % frames),
+              driver.find_element("tag name", "h1").text)
+        check("no SEVERE entry in the browser log (long sweep)", not severe_log(driver), str(severe_log(driver)))
 
         # ---- singular poses (the anti-parallelogram's folded poses): shown with their values, marked singular ---
         rc, anti = solve(os.path.join(SRC, "examples", "antiparallelogram.json"), "anti.html", "anti.csv")

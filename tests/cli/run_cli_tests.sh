@@ -524,6 +524,46 @@ check "--animate followed by an option: exit 2, no file named --csv" \
   $([ "$rc" -eq 2 ] && grep -q -- '--animate: expects a file name, got the option "--csv"' err.txt && [ ! -e ./--csv ]; echo $?)
 run solve --help
 check "solve --help lists --animate FILE" $(grep -Eq "^ +--animate FILE +[a-z]" out.txt; echo $?)
+
+# ---- outputs at any size (docs/reliability.md): charts at their resolution, the page in bounded frames -------
+# 150,001 poses: the chart holds at most 4 points per pixel column (plus a few per break) and still shows each
+# series' extremes: the lowest and highest points drawn, read back through the chart's own y ticks, are the
+# CSV column's minimum and maximum (to a pixel's hundredth, the document's precision).
+run solve "$EX/paper_fourbar.json" --from -50 --to 100 --step 0.001 --csv big.csv --plot big.svg --animate big.html
+check "150,001 poses: exit 0, every CSV row, chart under 2 MB, page under 5 MB" \
+  $([ "$rc" -eq 0 ] && [ "$(wc -l < big.csv)" -eq 150002 ] && [ "$(stat -c %s big.svg)" -lt 2000000 ] &&
+    [ "$(stat -c %s big.html)" -lt 5000000 ]; echo $?)
+check "150,001 poses: each series at most 4 points per pixel column, its extremes those of the CSV column" \
+  $(/usr/bin/python3 - big.svg big.csv <<'PY'
+import csv, sys, xml.etree.ElementTree as ET
+ns = "{http://www.w3.org/2000/svg}"
+chart = ET.parse(sys.argv[1]).getroot()
+chart = chart.find(ns + "svg") if chart.find(ns + "svg") is not None else chart  # the first of the stacked charts
+rows = list(csv.DictReader(open(sys.argv[2])))
+# The y ticks: the labels (right-aligned texts) and, in the same order, the 5 px tick marks left of the axis.
+labels = [float(t.text) for t in chart.iter(ns + "text") if t.get("text-anchor") == "end"]
+marks = [float(l.get("y1")) for l in chart.iter(ns + "line")
+         if l.get("y1") == l.get("y2") and abs(float(l.get("x2")) - float(l.get("x1")) - 5) < 1e-9]
+ticks = list(zip(labels, marks))
+(v0, p0), (v1, p1) = ticks[0], ticks[-1]
+to_value = lambda py: v0 + (py - p0) * (v1 - v0) / (p1 - p0)
+per_pixel = abs((v1 - v0) / (p1 - p0))
+bad = 0
+for g in chart.iter(ns + "g"):
+    if g.get("class") != "series":
+        continue
+    pts = [tuple(map(float, p.split(","))) for l in g.iter(ns + "polyline") for p in l.get("points").split()]
+    column = [float(r[g.get("data-name")]) for r in rows]
+    width = float(chart.get("width"))
+    bad += len(pts) > 4 * width or len(pts) < 100
+    bad += abs(max(to_value(y) for _, y in pts) - max(column)) > 0.011 * per_pixel
+    bad += abs(min(to_value(y) for _, y in pts) - min(column)) > 0.011 * per_pixel
+sys.exit(1 if bad else 0)
+PY
+echo $?)
+check "150,001 poses: the page's slider has 2000 frames and the title says so" \
+  $(grep -q '<input id="pose" type="range" min="0" max="1999"' big.html && grep -q "150001 poses of the sweep of .*, 2000 of them shown" big.html; echo $?)
+rm -f big.csv big.svg big.html
 cd .. || exit 1
 
 # ---- point files: closed contour with its first point repeated; messages that say what to do (defect 9, 7) ---

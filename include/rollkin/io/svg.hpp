@@ -2,7 +2,9 @@
 //
 //  - SvgChart: a 2-D line chart like a paper's figure (joint variables against the crank angle): title, axis
 //    labels, several named series of (x, y) points, automatic "nice" ticks, grid, legend, fixed pixel size.
-//    A non-finite x or y in a series breaks its line (no segment is drawn across it).
+//    A non-finite x or y in a series breaks its line (no segment is drawn across it). Each series is drawn
+//    at the chart's resolution (io/decimate.hpp, SeriesReducer): of the points in one pixel column the first,
+//    lowest, highest and last, so a series of any length gives a document of bounded size and loses no peak.
 //  - SvgDrawing: a world-coordinate canvas (y up) for pictures of mechanisms: polylines (open or closed),
 //    circles with a world radius, point markers and small text labels, scaled uniformly to fit all content
 //    inside the picture with a margin (or into a fixed world box). Stroke widths, marker sizes and font
@@ -56,7 +58,7 @@ struct ChartSeries {
   std::string color;         // empty: palette_color(index of the series)
   double stroke_width = 1.6; // px
   std::string dash;          // SVG stroke-dasharray, e.g. "6 3"; empty: solid
-  bool markers = false;      // a small circle at every finite point
+  bool markers = false;      // a small circle at every finite point drawn (all of them below the resolution)
 };
 
 enum class LegendPosition { TopRight, TopLeft, BottomRight, BottomLeft, Outside, None };
