@@ -219,4 +219,14 @@ template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q,
   return rep;
 }
 
+// Compiled once for double, in src/solve/instantiate_double.cpp (Pinocchio's way: a translation unit that calls
+// these for double only parses them; docs/benchmark.md, "Build times").
+extern template SolveReport<double> solve_position(const Mechanism<double>&, VectorX<double>&, SolveData<double>&, int);
+extern template void solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&, VectorX<double>&);
+extern template VectorX<double> solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&);
+extern template VectorX<double> solve_acceleration(const Mechanism<double>&, const VectorX<double>&, SolveData<double>&,
+                                                   const VectorX<double>&, const VectorX<double>&);
+extern template SolveReport<double> assemble(const Mechanism<double>&, VectorX<double>&, SolveData<double>&,
+                                             const std::vector<int>&);
+
 }  // namespace rollkin
