@@ -33,7 +33,7 @@ log() { echo "[setup] $*" >&2; }
 # svgelements, independent producers and readers of the CAD test files; chromium, its driver and selenium for
 # the browser test of the --animate page (tests/browser/test_animation.py).
 packages=(
-  g++ cmake make
+  g++ cmake make ccache
   libeigen3-dev libboost-dev libboost-test-dev libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev
   libdxflib-dev libpugixml-dev libcli11-dev
   libsuitesparse-dev
@@ -80,9 +80,14 @@ fi
 log "configuring $build_type build in $root/$build_dir"
 sanitize=OFF
 if [[ "${ROLLKIN_SANITIZE:-0}" == 1 ]]; then sanitize=ON; fi
-# A compiler cache, where one is installed, makes rebuilds of a second build directory cheap (not required).
+# The compiler cache (ccache, installed above): a rebuild after a change, a second build directory or a fresh
+# clone in another folder compiles only what changed. CCACHE_BASEDIR makes the cached compile commands relative
+# to the repository, so clones in different folders share the cache (docs/benchmark.md, "Build times").
 launcher=()
-if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null 2>&1; then
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_BASEDIR=$root;ccache")
+  ccache --max-size=20G >/dev/null 2>&1 || true
+fi
 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize" "${launcher[@]}"
 
 # ---- 3. build ------------------------------------------------------------------------------------------

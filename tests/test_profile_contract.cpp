@@ -6,205 +6,30 @@
 //    (first differences: h = eps^(1/3) L, error ~ eps^(2/3); second: h = eps^(1/4) L, error ~ eps^(1/2));
 //  - arc length against an independent Gauss-Legendre quadrature of |p'(u)| (profile/quadrature.hpp);
 //  - closed kinds wrap (jet(u + period) = jet(u)); open kinds do not claim to;
-//  - invalid construction throws std::invalid_argument.
+//  - invalid construction throws std::invalid_argument;
+//  - as a Contour (either direction, placed), an open kind goes on along its tangent line beyond its ends
+//    (profile/profile.hpp): jet, arc length and its inverse there against the closed form of that line,
+//    also a million lengths out (bounded work), and unchanged on the domain.
 // Test points and arc-length intervals lie inside one piece of every piecewise kind used here (pieces of
 // equal parameter length 1/8, 1/4, 1/2 of the domain), where the curve is analytic.
 //
-// A new kind joins by one factory struct below (make, refuse, closed) and one entry in Kinds.
+// A new kind joins by one factory struct and one entry in Kinds (profile_kinds.hpp).
 #define BOOST_TEST_MODULE profile_contract
 #include <boost/mp11/algorithm.hpp>
 #include <boost/test/unit_test.hpp>
 
-#include "rollkin/profile/profile.hpp"
+#include "profile_kinds.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 
 #include <tuple>
 #include <vector>
 
 using namespace rollkin;
+using namespace rollkin::testing;
 using M = mpfr_scalar<50>;
+using Scalars = std::tuple<double, M>;
 
 namespace {
-
-// ---- one factory per kind: make<S>() builds a valid profile, refuse<S>() tries invalid ones ---------
-
-struct LineKind {
-  static constexpr bool closed = false;
-  template <class S> static Line<S> make() { return Line<S>(S(-1) / S(2), S(3)); }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Line<S>(S(1), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Line<S>(S(2), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Line<S>(S(0), std::numeric_limits<S>::infinity()), std::invalid_argument);
-  }
-};
-
-struct CircleKind {
-  static constexpr bool closed = true;
-  template <class S> static Circle<S> make() { return Circle<S>(S(3) / S(2)); }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Circle<S>(S(0)), std::invalid_argument);
-    BOOST_CHECK_THROW(Circle<S>(S(-1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Circle<S>(std::numeric_limits<S>::quiet_NaN()), std::invalid_argument);
-  }
-};
-
-struct CircleArcKind {
-  static constexpr bool closed = false;
-  template <class S> static Circle<S> make() { return Circle<S>(S(2), S(-1) / S(3), S(2)); }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Circle<S>(S(0), S(0), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Circle<S>(S(-2), S(0), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Circle<S>(S(1), S(1), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Circle<S>(S(1), S(1), S(0)), std::invalid_argument);
-  }
-};
-
-struct ParabolaKind {
-  static constexpr bool closed = false;
-  template <class S> static Parabola<S> make() { return Parabola<S>(S(1) / S(4), S(-2), S(3)); }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Parabola<S>(S(0), S(-1), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Parabola<S>(S(1), S(1), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Parabola<S>(S(1), S(2), S(-1)), std::invalid_argument);
-  }
-};
-
-struct EllipseKind {
-  static constexpr bool closed = true;
-  template <class S> static Ellipse<S> make() { return Ellipse<S>(S(3), S(2)); }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Ellipse<S>(S(0), S(1)), std::invalid_argument);
-    BOOST_CHECK_THROW(Ellipse<S>(S(1), S(-1)), std::invalid_argument);
-  }
-};
-
-/// Arc length by its own quadrature (Gauss-Legendre, 20 points on 2 panels) instead of the closed form.
-struct EllipseQuadratureKind {
-  static constexpr bool closed = true;
-  template <class S> static Ellipse<S> make() {
-    ArcLengthMethod am;
-    am.closed_form = false;
-    am.rule.order = 20;
-    am.rule.panels = 2;
-    return Ellipse<S>(S(2), S(7) / S(2), am);
-  }
-  template <class S> static void refuse() {
-    BOOST_CHECK_THROW(Ellipse<S>(S(-3), S(1), ArcLengthMethod{}), std::invalid_argument);
-  }
-};
-
-/// n samples equally spaced on a circle of radius r from angle 0 to `turn` (a whole turn: closed, without
-/// repeating the first): equal chords, hence knots of equal spacing in the chord-length parameter.
-template <class S> std::vector<Vec2<S>> arc_samples(int n, const S& r, const S& turn, bool closed) {
-  std::vector<Vec2<S>> out;
-  using std::cos;
-  using std::sin;
-  for (int i = 0; i < n; ++i) {
-    const S a = turn * S(i) / S(closed ? n : n - 1);
-    out.emplace_back(r * cos(a), r * sin(a));
-  }
-  return out;
-}
-
-template <class S> SplineOptions<S> spline_options(bool closed) {
-  SplineOptions<S> o;
-  o.closed = closed;
-  return o;
-}
-
-template <class S> void refuse_samples(bool closed) {
-  const std::vector<Vec2<S>> three = {Vec2<S>(S(0), S(0)), Vec2<S>(S(1), S(0)), Vec2<S>(S(1), S(1))};
-  // Too few samples: an open (natural) spline needs 2, a closed one 3.
-  const std::vector<Vec2<S>> too_few(three.begin(), three.begin() + (closed ? 2 : 1));
-  BOOST_CHECK_THROW(SampledProfile<S>(too_few, spline_options<S>(closed)), std::invalid_argument);
-  std::vector<Vec2<S>> repeated = three;
-  repeated.insert(repeated.begin() + 1, three[0]);  // two equal consecutive samples
-  repeated.push_back(Vec2<S>(S(0), S(2)));
-  BOOST_CHECK_THROW(SampledProfile<S>(repeated, spline_options<S>(closed)), std::invalid_argument);
-  SplineOptions<S> negative = spline_options<S>(closed);
-  negative.smoothing_tolerance = S(-1);
-  BOOST_CHECK_THROW(SampledProfile<S>(arc_samples<S>(8, S(1), S(2), closed), negative), std::invalid_argument);
-}
-
-struct SamplesOpenKind {
-  static constexpr bool closed = false;
-  template <class S> static SampledProfile<S> make() {
-    return SampledProfile<S>(arc_samples<S>(9, S(2), S(3), false), spline_options<S>(false));
-  }
-  template <class S> static void refuse() { refuse_samples<S>(false); }
-};
-
-struct SamplesClosedKind {
-  static constexpr bool closed = true;
-  template <class S> static SampledProfile<S> make() {
-    return SampledProfile<S>(arc_samples<S>(8, S(2), S(2) * pi<S>(), true), spline_options<S>(true));
-  }
-  template <class S> static void refuse() { refuse_samples<S>(true); }
-};
-
-template <class S> BezierSegment<S> segment(std::vector<Vec2<S>> points, std::vector<S> weights = {}) {
-  return BezierSegment<S>{std::move(points), std::move(weights)};
-}
-
-/// Two cubic segments meeting with a continuous tangent at (2, 1).
-template <class S> BezierPath<S> two_cubics() {
-  auto P = [](int x, int y) { return Vec2<S>(S(x), S(y)); };
-  return BezierPath<S>({segment<S>({P(0, 0), P(1, 0), P(1, 1), P(2, 1)}), segment<S>({P(2, 1), P(3, 1), P(4, 3), P(5, 2)})},
-                       false);
-}
-
-/// An exact ellipse (semi-axes 2 and 1) as four rational quadratic quarter arcs (weights 1, 1/sqrt 2, 1).
-template <class S> BezierPath<S> rational_ellipse() {
-  using std::sqrt;
-  const S w = S(1) / sqrt(S(2));
-  std::vector<BezierSegment<S>> segs;
-  const Vec2<S> c[4] = {Vec2<S>(S(2), S(0)), Vec2<S>(S(0), S(1)), Vec2<S>(S(-2), S(0)), Vec2<S>(S(0), S(-1))};
-  for (int k = 0; k < 4; ++k) {
-    const Vec2<S> a = c[k], b = c[(k + 1) % 4];
-    segs.push_back(segment<S>({a, a + b, b}, {S(1), w, S(1)}));
-  }
-  return BezierPath<S>(std::move(segs), true);
-}
-
-template <class S> void refuse_bezier() {
-  const Vec2<S> o(S(0), S(0)), x(S(1), S(0));
-  BOOST_CHECK_THROW(BezierPath<S>({}, false), std::invalid_argument);
-  BOOST_CHECK_THROW(BezierPath<S>({segment<S>({o})}, false), std::invalid_argument);
-  BOOST_CHECK_THROW(BezierPath<S>({segment<S>({o, o, o})}, false), std::invalid_argument);
-  BOOST_CHECK_THROW(BezierPath<S>({segment<S>({o, x}, {S(1), S(0)})}, false), std::invalid_argument);
-  BOOST_CHECK_THROW(BezierPath<S>({segment<S>({o, x}, {S(1)})}, false), std::invalid_argument);
-}
-
-struct BezierKind {
-  static constexpr bool closed = false;
-  template <class S> static BezierPath<S> make() { return two_cubics<S>(); }
-  template <class S> static void refuse() { refuse_bezier<S>(); }
-};
-
-struct RationalBezierKind {
-  static constexpr bool closed = true;
-  template <class S> static BezierPath<S> make() { return rational_ellipse<S>(); }
-  template <class S> static void refuse() { refuse_bezier<S>(); }
-};
-
-/// Re-parameterised by arc length: the closed sampled circle (8 congruent spans, each of length L/8).
-struct ArcLengthSamplesKind {
-  static constexpr bool closed = true;
-  template <class S> static ArcLengthProfile<S> make() { return ArcLengthProfile<S>(SamplesClosedKind::make<S>()); }
-  template <class S> static void refuse() { refuse_samples<S>(true); }  // it only takes a valid base
-};
-
-/// Re-parameterised by arc length: the rational ellipse (four congruent quarters, pieces of length L/4).
-struct ArcLengthBezierKind {
-  static constexpr bool closed = true;
-  template <class S> static ArcLengthProfile<S> make() { return ArcLengthProfile<S>(rational_ellipse<S>()); }
-  template <class S> static void refuse() { refuse_bezier<S>(); }
-};
-
-using Kinds = std::tuple<LineKind, CircleKind, CircleArcKind, ParabolaKind, EllipseKind, EllipseQuadratureKind,
-                         SamplesOpenKind, SamplesClosedKind, BezierKind, RationalBezierKind, ArcLengthSamplesKind,
-                         ArcLengthBezierKind>;
-using Scalars = std::tuple<double, M>;
 
 template <class Kind, class S> struct Case {
   using kind = Kind;
@@ -334,4 +159,46 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_kinds_wrap, C, Cases) {
 BOOST_AUTO_TEST_CASE_TEMPLATE(invalid_construction_refused, C, Cases) {
   using S = typename C::scalar;
   C::kind::template refuse<S>();
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(open_contours_continue_along_their_tangent_beyond_their_ends, C, Cases) {
+  using S = typename C::scalar;
+  using std::abs;
+  const auto profile = C::kind::template make<S>();
+  const S scale = curve_scale(profile);
+  const SE2<S> placement(S(1) / S(3), Vec2<S>(S(2), S(-1)));
+  for (const bool reversed : {false, true}) {
+    const Contour<S> c("k", 0, ProfileShape<S>(profile), placement, reversed);
+    const Domain<S> d = c.domain();
+    const S mid = (d.lo + d.hi) / S(2);
+    // On the domain the contour is the placed profile (its own direction or reversed).
+    const S inside = d.lo + d.period() / S(3);
+    const Jet<S> pj = profile.jet(reversed ? S(-inside) : inside, 1);
+    BOOST_TEST((c.jet(inside, 1).p - placement.act(pj.p)).norm() <= S(16) * epsilon<S>() * scale);
+    if (d.closed) continue;
+    const S tol = S(1000) * epsilon<S>();
+    for (const bool at_hi : {true, false}) {
+      const S end = at_hi ? d.hi : d.lo, out = at_hi ? S(1) : S(-1);
+      const Jet<S> e = c.jet(end, 1);
+      const S speed = e.d1.norm();
+      for (const S& beyond : {d.period() / S(1000), d.period(), S(1000000) * d.period()}) {
+        const S u = end + out * beyond;
+        const Jet<S> j = c.jet(u, 3);
+        const Vec2<S> line = e.p + (u - end) * e.d1;  // the tangent line at the end
+        BOOST_TEST((j.p - line).norm() <= tol * (scale + line.norm()));
+        BOOST_TEST((j.d1 - e.d1).norm() <= tol * speed);
+        BOOST_TEST(j.d2.norm() == S(0));
+        BOOST_TEST(j.d3.norm() == S(0));
+        const S along = c.arc_length(end, u), total = c.arc_length(mid, u);
+        BOOST_TEST(abs(along - (u - end) * speed) <= tol * abs(along));
+        BOOST_TEST(abs(total - (c.arc_length(mid, end) + along)) <= tol * abs(total));
+        BOOST_TEST(abs(c.arc_length(u, mid) + total) <= tol * abs(total));  // signed
+        BOOST_TEST(abs(c.param_at_arc_length(mid, total) - u) <= tol * (abs(u) + d.period()));
+        BOOST_TEST(d.contains(u) == false);
+      }
+      BOOST_TEST(d.contains(end));
+    }
+    const S nan = std::numeric_limits<S>::quiet_NaN();
+    BOOST_TEST(d.contains(nan) == false);
+  }
 }

@@ -237,4 +237,8 @@ template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const std
   return out;
 }
 
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
+extern template PoseAnalysis<double> analyse_pose(const Mechanism<double>&, const VectorX<double>&, const VectorX<double>&,
+                                                  AnalysisData<double>&);
+
 }  // namespace rollkin

@@ -61,4 +61,8 @@ template <class S> std::vector<InstantCentre<S>> centrodes(const Mechanism<S>& m
   return out;
 }
 
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
+extern template std::vector<InstantCentre<double>> centrodes(const Mechanism<double>&, KinematicsData<double>&,
+                                                             const SweepResult<double>&, int, int);
+
 }  // namespace rollkin

@@ -362,4 +362,8 @@ template <class S> DesignCheck<S> check_design(const Mechanism<S>& m, const Swee
   return out;
 }
 
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
+extern template DesignCheck<double> check_design(const Mechanism<double>&, const SweepResult<double>&,
+                                                 const DesignCheckOptions&);
+
 }  // namespace rollkin

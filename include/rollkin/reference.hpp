@@ -16,8 +16,8 @@
 // inconsistent at the 1e-16 level, which 50 digits would otherwise report as CannotAssemble; the
 // least-squares residual of every pose is returned so such a reference is visibly limited by its input.
 //
-// The MPFR instantiations (30, 50, 100 digits) live in src/reference.cpp only: including this header does
-// not compile the solver in MPFR.
+// The MPFR instantiations (30, 50, 100 digits) live in src/reference_mp30.cpp, reference_mp50.cpp and
+// reference_mp100.cpp only: including this header does not compile the solver in MPFR.
 #pragma once
 
 #include "rollkin/kinematics.hpp"

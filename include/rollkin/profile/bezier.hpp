@@ -237,7 +237,10 @@ template <class S> class BezierPath {
     using std::abs;
     using std::ceil;
     QuadratureRule rule = segment_rule();
-    rule.panels = std::max(1, static_cast<int>(to_double(ceil(S(panels_[i]) * abs(b - a)))));
+    // The segment's panels per unit of t, at most twice the segment's own count: only the contour's tangent
+    // extension (profile.hpp) asks for lengths beyond the segment, so the work is bounded for every input.
+    const double wanted = std::ceil(panels_[i] * to_double(abs(b - a)));
+    rule.panels = wanted >= 1 ? static_cast<int>(std::min(wanted, 2.0 * panels_[i])) : 1;
     return integrate<S>([&](const S& u) { return speed(i, u); }, a, b, rule);
   }
 

@@ -39,7 +39,17 @@ template <class S> struct Domain {
   bool closed = false;  // closed: u is periodic with period hi - lo
 
   S period() const { return hi - lo; }
-  bool contains(const S& u) const { return closed || (u >= lo && u <= hi); }
+  /// Whether a contact at u lies on the drawn contour: any u of a closed contour; on an open one
+  /// lo <= u <= hi up to round-off of the range (16 eps of its largest magnitude), so that a contact assembled
+  /// at an end is on it. A NaN is on no open contour. The one rule for assembly and sweeps
+  /// (solve/contact_limits.hpp).
+  bool contains(const S& u) const {
+    using std::abs;
+    using std::max;
+    if (closed) return true;
+    const S slack = S(16) * epsilon<S>() * max(max(abs(lo), abs(hi)), S(hi - lo));
+    return u >= lo - slack && u <= hi + slack;
+  }
   /// Maps u into [lo, hi) for closed contours; identity for open ones.
   S wrap(const S& u) const {
     if (!closed) return u;

@@ -4,6 +4,14 @@
 // Material side: every profile type defines a natural direction (see its header); when the scene says the
 // material lies on the other side, the contour runs the profile backwards, u -> -u, so that the material is
 // on the left again (docs/method.md section 3). Derivatives of odd order change sign under that reversal.
+//
+// Beyond the ends of an open contour: the contour is defined on its domain only, and a contact there is
+// refused (Domain::contains; solve/contact_limits.hpp). Newton's iterates may still stray past an end on the
+// way to a solution, so every query of the contour is defined for every u: beyond an end the contour goes on
+// along its tangent line at that end, p(e) + (u - e) p'(e), with arc length (u - e) |p'(e)|. This extension is
+// C1, cheap and bounded for every profile kind (no extrapolated spline, rational pole or quadrature over the
+// undrawn part: an iterate far outside costs what one inside costs), and it never changes a value on the
+// domain. docs/reliability.md, "Contacts stay on the drawn contour".
 #pragma once
 
 #include "rollkin/profile/arc_length_parameterised.hpp"
@@ -55,7 +63,8 @@ template <class S> class Contour {
         placement_(placement),
         placed_(!placement.is_identity()),
         reversed_(reversed),
-        corner_labels_(std::move(corner_labels)) {
+        corner_labels_(std::move(corner_labels)),
+        domain_(profile_domain()) {
     find_corners();
   }
 
@@ -65,34 +74,29 @@ template <class S> class Contour {
   bool reversed() const { return reversed_; }
   const ProfileShape<S>& shape() const { return shape_; }
 
-  Domain<S> domain() const {
-    const Domain<S> d = visit([](const auto& p) { return p.domain(); });
-    if (!reversed_) return d;
-    return Domain<S>{-d.hi, -d.lo, d.closed};
-  }
+  /// The parameter range of the drawn contour, in this contour's (possibly reversed) parameter.
+  const Domain<S>& domain() const { return domain_; }
   ParamKind parameter_kind() const { return visit([](const auto& p) { return p.parameter_kind(); }); }
   /// Tangent discontinuities, in this contour's (possibly reversed) parameter.
   const std::vector<ContourCorner<S>>& corners() const { return corners_; }
   int continuity() const { return visit([](const auto& p) { return p.continuity(); }); }
 
   /// Jet in the LINK frame, material on the left (an identity placement is skipped: it changes no digit).
+  /// Beyond an open end: the tangent-line extension (file comment).
   Jet<S> jet(const S& u, int order) const {
-    Jet<S> j = visit([&](const auto& p) { return p.jet(reversed_ ? S(-u) : u, order); });
-    if (reversed_) {
-      j.d1 = -j.d1;
-      j.d3 = -j.d3;
-    }
-    if (!placed_) return j;
-    j.p = placement_.act(j.p);
-    j.d1 = placement_.rotate(j.d1);
-    if (order >= 2) j.d2 = placement_.rotate(j.d2);
-    if (order >= 3) j.d3 = placement_.rotate(j.d3);
+    if (!beyond_end(u)) return jet_on_domain(u, order);
+    const S e = nearest_end(u);
+    Jet<S> j = jet_on_domain(e, 1);
+    j.p += (u - e) * j.d1;
+    j.d2.setZero();
+    j.d3.setZero();
     return j;
   }
   /// Signed arc length from u0 to u1 in this contour's (possibly reversed) parameter.
   S arc_length(const S& u0, const S& u1) const {
-    if (!reversed_) return visit([&](const auto& p) { return p.arc_length(u0, u1); });
-    return -visit([&](const auto& p) { return p.arc_length(S(-u0), S(-u1)); });
+    if (!beyond_end(u0) && !beyond_end(u1)) return arc_length_on_domain(u0, u1);
+    const S e0 = nearest_end(u0), e1 = nearest_end(u1);
+    return arc_length_on_domain(e0, e1) + overhang(u1, e1) - overhang(u0, e0);
   }
   /// Origin u0 of arc lengths measured from a fixed parameter (a rolling pair's assembly contact), with the
   /// primitive s(u0) evaluated once when the profile has one (closed form or cumulative table).
@@ -105,9 +109,16 @@ template <class S> class Contour {
   S arc_length_from(const ArcOrigin<S>& origin, const S& u) const {
     return origin.has_primitive ? S(primitive(u) - origin.primitive) : arc_length(origin.u0, u);
   }
+  /// u with arc_length(u0, u) = ds (on the tangent-line extension where that lies beyond an open end).
   S param_at_arc_length(const S& u0, const S& ds) const {
-    if (!reversed_) return visit([&](const auto& p) { return p.param_at_arc_length(u0, ds); });
-    return -visit([&](const auto& p) { return p.param_at_arc_length(S(-u0), S(-ds)); });
+    if (domain_.closed) return param_on_domain(u0, ds);
+    const S e0 = nearest_end(u0);
+    const S along = ds + overhang(u0, e0);  // arc length from e0
+    const S to_hi = arc_length_on_domain(e0, domain_.hi);
+    if (along > to_hi) return domain_.hi + (along - to_hi) / speed_on_domain(domain_.hi);
+    const S to_lo = arc_length_on_domain(e0, domain_.lo);
+    if (along < to_lo) return domain_.lo + (along - to_lo) / speed_on_domain(domain_.lo);
+    return param_on_domain(e0, along);
   }
 
   /// How far the profile may lie from the contour it stands for: zero for analytic and Bezier profiles (exact
@@ -140,10 +151,49 @@ template <class S> class Contour {
 
  private:
   template <class F> auto visit(F&& f) const { return std::visit(std::forward<F>(f), shape_); }
-  /// The profile's arc-length primitive in this contour's parameter: reversed, s(u) = -s_profile(-u).
+  Domain<S> profile_domain() const {
+    const Domain<S> d = visit([](const auto& p) { return p.domain(); });
+    if (!reversed_) return d;
+    return Domain<S>{-d.hi, -d.lo, d.closed};
+  }
+
+  // ---- the tangent-line extension beyond an open end (file comment) ----
+  bool beyond_end(const S& u) const { return !domain_.closed && (u < domain_.lo || u > domain_.hi); }
+  /// u itself on the domain, else the end it lies beyond.
+  S nearest_end(const S& u) const { return u < domain_.lo ? domain_.lo : (u > domain_.hi ? domain_.hi : u); }
+  /// Arc length along the extension from end e out to u: (u - e) |p'(e)|; zero on the domain.
+  S overhang(const S& u, const S& e) const { return u == e ? S(0) : S((u - e) * speed_on_domain(e)); }
+  S speed_on_domain(const S& u) const { return jet_on_domain(u, 1).d1.norm(); }
+
+  // ---- the profile itself, in this contour's parameter and frame ----
+  Jet<S> jet_on_domain(const S& u, int order) const {
+    Jet<S> j = visit([&](const auto& p) { return p.jet(reversed_ ? S(-u) : u, order); });
+    if (reversed_) {
+      j.d1 = -j.d1;
+      j.d3 = -j.d3;
+    }
+    if (!placed_) return j;
+    j.p = placement_.act(j.p);
+    j.d1 = placement_.rotate(j.d1);
+    if (order >= 2) j.d2 = placement_.rotate(j.d2);
+    if (order >= 3) j.d3 = placement_.rotate(j.d3);
+    return j;
+  }
+  S arc_length_on_domain(const S& u0, const S& u1) const {
+    if (!reversed_) return visit([&](const auto& p) { return p.arc_length(u0, u1); });
+    return -visit([&](const auto& p) { return p.arc_length(S(-u0), S(-u1)); });
+  }
+  S param_on_domain(const S& u0, const S& ds) const {
+    if (!reversed_) return visit([&](const auto& p) { return p.param_at_arc_length(u0, ds); });
+    return -visit([&](const auto& p) { return p.param_at_arc_length(S(-u0), S(-ds)); });
+  }
+  /// The profile's arc-length primitive in this contour's parameter (reversed, s(u) = -s_profile(-u)),
+  /// continued along the extension.
   S primitive(const S& u) const {
-    if (!reversed_) return visit([&](const auto& p) { return p.arc_length_primitive(u); });
-    return -visit([&](const auto& p) { return p.arc_length_primitive(S(-u)); });
+    const S e = nearest_end(u);
+    const S s = reversed_ ? S(-visit([&](const auto& p) { return p.arc_length_primitive(S(-e)); }))
+                          : visit([&](const auto& p) { return p.arc_length_primitive(e); });
+    return s + overhang(u, e);
   }
   static S mid_span(const SampledProfile<S>& p, std::size_t k) { return (p.knot(k) + p.knot(k + 1)) / S(2); }
 
@@ -173,6 +223,7 @@ template <class S> class Contour {
   bool reversed_;
   std::vector<std::string> corner_labels_;
   std::vector<ContourCorner<S>> corners_;
+  Domain<S> domain_;  // in this contour's parameter (profile_domain())
 };
 
 }  // namespace rollkin

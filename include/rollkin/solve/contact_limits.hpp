@@ -20,6 +20,24 @@ struct ContactLimit {
   explicit operator bool() const { return variable >= 0; }
 };
 
+/// The first contact variable of pose q that lies off its open contour (Domain::contains, the one rule for
+/// assembly and every swept pose), with its pair and contour; variable < 0: every contact is on its contour.
+struct ContactOffContour {
+  int variable = -1, pair = -1, contour = -1;
+  explicit operator bool() const { return variable >= 0; }
+};
+template <class S> ContactOffContour contact_off_contour(const Mechanism<S>& m, const VectorX<S>& q) {
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    const Pair<S>& p = m.pairs[k];
+    if (!is_contact(p.kind)) continue;
+    for (int j = 0; j < 2; ++j) {
+      const int c = j == 0 ? p.contour_a : p.contour_b;
+      if (!m.contours[c].domain().contains(q(p.first_variable + j))) return {p.first_variable + j, static_cast<int>(k), c};
+    }
+  }
+  return {};
+}
+
 /// The contact variables whose contours have an end (open domain) or corners, collected once per sweep: the
 /// check runs after every accepted step. Closed contours wrap, so only their corners can stop a contact.
 template <class S> class ContactLimits {

@@ -640,4 +640,14 @@ template <class S> SweepSummary<S> sweep_summary(const Mechanism<S>& m, SolveDat
   return out;
 }
 
+// Compiled once for double, in src/solve/instantiate_double.cpp (docs/benchmark.md, "Build times").
+extern template double estimate_substeps(const Mechanism<double>&, const VectorX<double>&, int, const std::vector<double>&,
+                                         const ContinuationSettings<double>&);
+extern template SweepResult<double> sweep(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
+                                          const SolveReport<double>&, int, const std::vector<double>&,
+                                          const ContinuationSettings<double>&);
+extern template SweepSummary<double> sweep_summary(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
+                                                   const SolveReport<double>&, int, const std::vector<double>&,
+                                                   const ContinuationSettings<double>&);
+
 }  // namespace rollkin

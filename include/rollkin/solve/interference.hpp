@@ -265,4 +265,8 @@ template <class S> SweepInterference check_interference(const Mechanism<S>& m, c
   return out;
 }
 
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
+extern template SweepInterference check_interference(const Mechanism<double>&, const SweepResult<double>&,
+                                                     const InterferenceCheck&);
+
 }  // namespace rollkin

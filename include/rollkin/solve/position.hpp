@@ -8,6 +8,7 @@
 // CannotAssemble. A converged pose whose error bound is not yet round-off takes one refining step.
 #pragma once
 
+#include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/solve_data.hpp"
 
 #include <sstream>
@@ -158,10 +159,40 @@ template <class S> VectorX<S> solve_acceleration(const Mechanism<S>& m, const Ve
   return qdd;
 }
 
+namespace detail {
+
+/// A contact parameter of q beyond the end of its open contour (Domain::contains): the loops close there
+/// only on the contour's extension, which is not drawn (profile/profile.hpp), so the mechanism cannot be
+/// assembled as given. Sets rep to CannotAssemble naming the pair, the contour, the parameter and the
+/// contour's range; returns whether it did.
+template <class S> bool refuse_contact_off_contour(const Mechanism<S>& m, const VectorX<S>& q, SolveReport<S>& rep) {
+  const ContactOffContour off = contact_off_contour(m, q);
+  if (!off) return false;
+  const Contour<S>& c = m.contours[off.contour];
+  const bool angle = c.parameter_kind() == ParamKind::Angle;
+  const double unit = angle ? 180 / pi<double>() : 1;
+  std::ostringstream os;
+  os.precision(10);
+  os << "the contact of pair '" << m.pairs[off.pair].name << "' lies at " << m.variables[off.variable].name << " = "
+     << to_double(q(off.variable)) * unit << (angle ? " deg" : "") << ", beyond the end of contour '" << c.name()
+     << "', which is drawn for " << to_double(c.domain().lo) * unit << " .. " << to_double(c.domain().hi) * unit
+     << (angle ? " deg" : "") << "; give the pair \"values\" on the drawn contour (or draw the contour where the"
+     << " contact is)";
+  rep.status = SolveStatus::CannotAssemble;
+  rep.pair = off.pair;
+  rep.contour = off.contour;
+  rep.detail = os.str();
+  return true;
+}
+
+}  // namespace detail
+
 /// Assembly: closes the loops (rolling rows left out) with minimum-norm corrections from the guess in q,
 /// keeping the drivers and the `held` variables at their given values; then makes the assembled contact
 /// parameters the rolling pairs' arc-length origins (eq. 3: D_i = D_i-1 counted from the assembly pose) and
-/// solves the full system there, which reports its rank, redundancy and mobility.
+/// solves the full system there, which reports its rank, redundancy and mobility. A contact left beyond the
+/// end of an open contour, after closing the loops or after the full solve, is CannotAssemble
+/// (detail::refuse_contact_off_contour).
 template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q, SolveData<S>& sd,
                                            const std::vector<int>& held = {}) {
   SolveReport<S> rep;
@@ -178,12 +209,24 @@ template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q,
       return rep;
     }
   }
+  if (detail::refuse_contact_off_contour(m, q, rep)) return rep;
   sd.kin.reference = q;
   rep = solve_position(m, q, sd);
   if (rep.status == SolveStatus::Underdetermined)
     rep.detail = "the drivers do not fix the pose: the mechanism has " +
                  std::to_string(rep.unknowns - rep.rank) + " more degree(s) of freedom than inputs";
+  if (rep.has_pose()) detail::refuse_contact_off_contour(m, q, rep);
   return rep;
 }
+
+// Compiled once for double, in src/solve/instantiate_double.cpp (Pinocchio's way: a translation unit that calls
+// these for double only parses them; docs/benchmark.md, "Build times").
+extern template SolveReport<double> solve_position(const Mechanism<double>&, VectorX<double>&, SolveData<double>&, int);
+extern template void solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&, VectorX<double>&);
+extern template VectorX<double> solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&);
+extern template VectorX<double> solve_acceleration(const Mechanism<double>&, const VectorX<double>&, SolveData<double>&,
+                                                   const VectorX<double>&, const VectorX<double>&);
+extern template SolveReport<double> assemble(const Mechanism<double>&, VectorX<double>&, SolveData<double>&,
+                                             const std::vector<int>&);
 
 }  // namespace rollkin
