@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,46 @@ double ccw_sweep(double from, double to, double turn) {
   return sweep;
 }
 
+// ---- polyline bulges (docs/scene_format.md, "dxf contours") -------------------------------------------------
+//
+// The piece from vertex a to b with bulge k = tan(theta / 4) (theta the included angle, counter-clockwise for
+// k > 0) is built from the chord and the bulge alone, never from the centre, which lies (1 - k^2) / (4 k)
+// chords away: for a small bulge its round-off would swamp the arc. With m the chord's midpoint, h half its
+// length and n = perp(b - a) its left normal (|n| = 2 h):
+//  - an arc of at most 90 degrees is one rational quadratic whose middle control point is the end tangents'
+//    intersection, h tan(theta / 2) to the right of m: m - n k / (1 - k^2) (tan(theta / 2) = 2 k / (1 - k^2)),
+//    with weight cos(theta / 2) = (1 - k^2) / (1 + k^2);
+//  - a larger arc is halved at its middle point m - n k / 2 (its sagitta is h k), each half with bulge
+//    tan(theta / 8) = k / (1 + sqrt(1 + k^2));
+//  - a bulge of at most the double round-off eps is a line: its sagitta h |k| <= eps max(|a|, |b|) is below
+//    the round-off of the vertices themselves (max(|a|, |b|) >= h);
+//  - a bulge above kLargestBulge is refused: the arc's ends are 2 / (|k| + 1 / |k|) of its diameter apart,
+//    below the join tolerance, and cannot be told from a whole circle.
+
+/// Extrusion directions within this angle (radians) of +Z or -Z are +Z or -Z.
+constexpr double kExtrusionTolerance = 1e-12;
+
+/// tan(pi / 8) = sqrt(2) - 1 (a quarter turn), with room for the rounding of the halving.
+constexpr double kQuarterTurnBulge = 0.41421356237310;
+constexpr double kLargestBulge = 2 / kDxfJoinTolerance;
+
+void append_bulge_pieces(const V& a, const V& b, double bulge, std::vector<Segment>& out) {
+  if (std::abs(bulge) <= std::numeric_limits<double>::epsilon()) {
+    out.push_back({{a, b}, {}});
+    return;
+  }
+  const V m = (a + b) / 2, n = perp(V(b - a));
+  if (std::abs(bulge) > kQuarterTurnBulge) {
+    const V middle = m - n * (bulge / 2);
+    const double half = bulge / (1 + std::hypot(1.0, bulge));
+    append_bulge_pieces(a, middle, half, out);
+    append_bulge_pieces(middle, b, half, out);
+    return;
+  }
+  const double k2 = bulge * bulge;
+  out.push_back({{a, m - n * (bulge / (1 - k2)), b}, {1.0, (1 - k2) / (1 + k2), 1.0}});
+}
+
 class Converter {
  public:
   explicit Converter(std::string file) : file_(std::move(file)) {}
@@ -69,11 +110,15 @@ class Converter {
 
   bool mirrored(const RawEntity& e) const { return e.extrusion[2] < 0; }
 
+  /// The extrusion direction must be +Z or -Z: its angle to the Z axis at most kExtrusionTolerance radians
+  /// (round-off of a written unit normal, 0.99999999999999989 for 1), which the arbitrary axis algorithm
+  /// makes exactly (0, 0, +-1) after normalising it; the sign is then that of its z (mirrored()).
   void check_extrusion(const RawEntity& e) const {
     const auto& n = e.extrusion;
-    if (!(n[0] == 0 && n[1] == 0 && std::abs(n[2]) == 1))
-      fail(e, "has extrusion direction (" + number(n[0]) + ", " + number(n[1]) + ", " + number(n[2]) +
-                  "): only drawings in the XY plane, extrusion (0, 0, 1) or (0, 0, -1), are read");
+    if (!(n[2] != 0 && std::hypot(n[0], n[1]) <= kExtrusionTolerance * std::abs(n[2])))
+      fail(e, "has extrusion direction (" + exact_number(n[0]) + ", " + exact_number(n[1]) + ", " + exact_number(n[2]) +
+                  "): only drawings in the XY plane are read, extrusion (0, 0, 1) or (0, 0, -1) within " +
+                  number(kExtrusionTolerance) + " radians");
   }
 
   /// OCS to WCS for extrusion (0, 0, -1): the arbitrary axis algorithm gives Ax = (-1, 0, 0), Ay = (0, 1, 0).
@@ -114,18 +159,15 @@ class Converter {
     piece.closed = full_turn(sweep);
   }
 
-  /// Bulge b from a to b_: arc of included angle 4 atan(b) (counter-clockwise for b > 0), centre on the chord's
-  /// perpendicular bisector at (1 - b^2) / (4 b) chord lengths to its left.
-  std::vector<Segment> bulge_arc(const V& a, const V& b_, double bulge) const {
-    const double angle = 4 * std::atan(bulge);
-    const V center = (a + b_) / 2 + perp(V(b_ - a)) * ((1 - bulge * bulge) / (4 * bulge));
-    const double r = (a - center).norm(), t0 = std::atan2(a.y() - center.y(), a.x() - center.x());
-    if (!std::isfinite(r) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
-      throw std::range_error("bulge " + number(bulge) + " gives no finite arc");
-    std::vector<Segment> segs = affine_arc(t0, t0 + angle, center, V(r, 0), V(0, r));
-    segs.front().points.front() = a;  // the vertices are the data: keep them exact
-    segs.back().points.back() = b_;
-    return segs;
+  /// The piece from vertex a to vertex b with bulge `bulge` (dxf_bulge_pieces), or the error naming the vertex.
+  void bulge_piece(const RawEntity& e, std::size_t vertex, const V& a, const V& b, double bulge, Piece& piece) const {
+    if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(vertex));
+    if (std::abs(bulge) > kLargestBulge)
+      fail(e, "at vertex " + std::to_string(vertex) + ": bulge " + exact_number(bulge) + " makes an arc whose ends are " +
+                  number(2 / (std::abs(bulge) + 1 / std::abs(bulge))) + " of its diameter apart, below the join tolerance (" +
+                  number(kDxfJoinTolerance) + "): it cannot be told from a whole circle; a bulge is at most " +
+                  number(kLargestBulge) + " (draw a whole circle as a CIRCLE)");
+    append_bulge_pieces(a, b, bulge, piece.segments);
   }
 
   void polyline(const RawEntity& e, Piece& piece) const {
@@ -150,19 +192,7 @@ class Converter {
       const Vertex& w = vs[(i + 1) % n];
       const V a = three_d ? V(v.x, v.y) : ocs(e, v.x, v.y), b = three_d ? V(w.x, w.y) : ocs(e, w.x, w.y);
       // Mirroring the OCS x axis reverses the sense of rotation, hence the bulge's sign.
-      const double bulge = three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge);
-      if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(i));
-      if (bulge == 0) {
-        piece.segments.push_back({{a, b}, {}});
-      } else {
-        std::vector<Segment> arc;
-        try {
-          arc = bulge_arc(a, b, bulge);
-        } catch (const std::range_error& ex) {
-          fail(e, std::string("at vertex ") + std::to_string(i) + ": " + ex.what());
-        }
-        for (Segment& s : arc) piece.segments.push_back(std::move(s));
-      }
+      bulge_piece(e, i, a, b, three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge), piece);
     }
     piece.closed = closed;
   }
