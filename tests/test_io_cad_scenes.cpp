@@ -167,6 +167,41 @@ BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cyclo
   BOOST_TEST(closed_form < 1e-9 * kDeg);
 }
 
+// A straight run drawn through many collinear vertices of different spacing is one line: a disk rolls along
+// it on the native parameter, every pose ok, as on an analytic line (the cycloid: disk angle = -travel / r).
+// Before, the parameter's speed jumped at every vertex (2.5 and 7.5 mm pieces in turn) and the sweep stopped
+// with no_convergence after 1.14 m (300,000 such vertices: `singular` poses). For every reader that builds a
+// path: the DXF LWPOLYLINE of 2001 vertices (straight_mm.dxf, RUN) and the same run as an SVG path.
+BOOST_AUTO_TEST_CASE(a_straight_run_of_collinear_vertices_is_one_line_for_every_reader) {
+  const std::string middle = read_text(kDxf + "straight_mm.RUN.txt");
+  BOOST_REQUIRE(contains(middle, "# vertices 2001") && contains(middle, "# middle_vertex 1000"));
+  std::string d = "M -5000 0";
+  for (int k = 0; k < 2000; ++k) d += " L " + number(-5000 + 5 * k + (k % 2 ? 5 : 2.5)) + " 0";  // 2.5, 7.5 mm in turn
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "run.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10000mm\" height=\"20mm\" viewBox=\"0 0 10000 20\">\n"
+      "  <path id=\"run\" d=\"" + d + "\"/>\n</svg>\n");
+  const std::string tracks[] = {"\"type\": \"dxf\", \"file\": \"" + kDxf + "straight_mm.dxf\", \"layer\": \"RUN\",",
+                                "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"run\","};
+  for (const std::string& track : tracks) {
+    BOOST_TEST_CONTEXT(track) {
+      std::string text = replaced(read_text(kExamples + "cycloid.json"), "\"type\": \"line\", \"from\": -10, \"to\": 10,", track);
+      // One line piece, reversed by "material": "right": its middle at -0.5. Three quarters of a turn (4.7 m).
+      text = replaced(text, "\"values\": [-90, 0]", "\"values\": [-90, -0.5]");
+      text = replaced(text, "\"to\": 6.283185307179586", "\"to\": " + number(1.5 * M_PI));
+      const io::Scene s = scene_from("straight_run.json", text);
+      const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+      BOOST_TEST(domain.hi - domain.lo == 1.0);
+      const SweepResult<double> r = solved(s);
+      const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+      double closed_form = 0;
+      for (const auto& pose : r.poses) closed_form = std::max(closed_form, std::abs(pose.q(turn) + pose.q(travel)));
+      BOOST_TEST_MESSAGE("straight run: " << r.poses.size() << " poses, |psi + s / r| up to " << closed_form);
+      BOOST_TEST(r.poses.size() == 16u);
+      BOOST_TEST(closed_form < 1e-12);
+    }
+  }
+}
+
 // (d) The planet of examples/hypocycloid.json as an exact rational quadratic NURBS circle (9 control points,
 // weights 1 and sqrt(2)/2): the planet turns -3 phi absolutely, -4 phi relative to the arm (r = 1, R = 4).
 BOOST_AUTO_TEST_CASE(nurbs_circle_rolling_in_a_ring_is_the_hypocycloid) {
