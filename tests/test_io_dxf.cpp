@@ -208,6 +208,23 @@ BOOST_AUTO_TEST_CASE(mirrored_extrusion_arc_circle_and_ellipse) {
   check_fixture("curves", "ELLIPSE_M");
 }
 
+// A POLYLINE's extrusion is its own (groups 210-230 of the POLYLINE), not that of its VERTEX entities, which
+// libdxflib reports with each vertex as (0, 0, 1) by default: a mirrored POLYLINE was read unmirrored (found
+// by the differential test against ezdxf, test_io_dxf_differential.cpp).
+BOOST_AUTO_TEST_CASE(a_mirrored_polyline_keeps_its_extrusion_over_its_vertices) {
+  const std::string vertex = "0\nVERTEX\n8\nL\n10\n";
+  const std::string text = minimal_dxf("0\nPOLYLINE\n5\n8A\n8\nL\n66\n1\n70\n0\n210\n0\n220\n0\n230\n-1\n" + vertex + "1\n20\n2\n" +
+                                       vertex + "3\n20\n2\n42\n0.5\n" + vertex + "3\n20\n5\n0\nSEQEND\n8\nL\n");
+  const DxfContour c = rollkin::parse_dxf_contour(text, DxfSelection{"L", ""});
+  BOOST_REQUIRE(c.segments.size() >= 2u);
+  BOOST_TEST((c.segments.front().points.front() - V(-1, 2)).norm() == 0.0);
+  BOOST_TEST((c.segments.back().points.back() - V(-3, 5)).norm() == 0.0);
+  // The bulge 0.5, counter-clockwise in the OCS from (3, 2) to (3, 5), passes 0.75 to the right of the chord
+  // there, (3.75, 3.5): in the world (-3.75, 3.5), where its two halves meet.
+  BOOST_REQUIRE_EQUAL(c.segments.size(), 3u);
+  BOOST_TEST((c.segments[2].points.front() - V(-3.75, 3.5)).norm() <= 1e-15);
+}
+
 BOOST_AUTO_TEST_CASE(circles_and_ellipses_full_and_partial_unitless) {
   const DxfContour circle = check_fixture("curves", "CIRCLE");
   BOOST_TEST(circle.unit.empty());

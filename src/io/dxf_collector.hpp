@@ -107,7 +107,7 @@ class Collector : public DL_CreationAdapter {
     if (RawEntity* e = target()) e->flags = d.flags;
   }
   void addVertex(const DL_VertexData& d) override {
-    if (RawEntity* e = target()) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
+    if (RawEntity* e = target(false)) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
   }
   void addSpline(const DL_SplineData& d) override {
     if (RawEntity* e = target()) {
@@ -124,13 +124,18 @@ class Collector : public DL_CreationAdapter {
 
  private:
   /// The entity a callback belongs to: the one whose end (the next group 0) libdxflib is processing, when it
-  /// lies in the ENTITIES section; records that its geometry arrived and the extrusion libdxflib set for it.
-  RawEntity* target() {
+  /// lies in the ENTITIES section; records that its geometry arrived and, from the entity's own callback
+  /// (`own`), the extrusion libdxflib set for it. A POLYLINE's VERTEX callbacks come with the VERTEX's
+  /// extrusion, (0, 0, 1) by default: the POLYLINE's own (group 210 of the POLYLINE) must not be replaced by
+  /// it (ezdxf_random.py's mirrored POLYLINEs were read unmirrored).
+  RawEntity* target(bool own = true) {
     if (target_ < 0) return nullptr;
     RawEntity& e = entities[static_cast<std::size_t>(target_)];
     e.delivered = true;
-    const double* dir = getExtrusion()->getDirection();
-    e.extrusion = {dir[0], dir[1], dir[2]};
+    if (own) {
+      const double* dir = getExtrusion()->getDirection();
+      e.extrusion = {dir[0], dir[1], dir[2]};
+    }
     return &e;
   }
 
