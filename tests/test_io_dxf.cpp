@@ -456,6 +456,12 @@ BOOST_AUTO_TEST_CASE(extrusion_within_round_off_of_z_is_z) {
   const std::string tilted = dxf_error(circle("210\n1e-9\n220\n0\n230\n0.99999999999999989\n"), "L");
   BOOST_TEST(contains(tilted, "CIRCLE 6A has extrusion direction (1e-09, 0, 0.9999999999999999): only drawings in the XY plane"));
   BOOST_TEST(contains(dxf_error(circle("230\n0\n"), "L"), "extrusion direction (0, 0, 0)"));
+  // Every value a message tests against a bound is printed exactly: an axis ratio just above 1, z values that
+  // differ in the last digit.
+  const std::string ratio = "0\nELLIPSE\n5\n6C\n8\nL\n10\n0\n20\n0\n11\n2\n21\n0\n40\n1.0000000000000002\n41\n0\n42\n1\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(ratio), "L"), "ELLIPSE 6C has axis ratio 1.0000000000000002; it must be in (0, 1]"));
+  const std::string z = "0\nLINE\n5\n2A\n8\nL\n10\n0\n20\n0\n30\n1\n11\n1\n21\n0\n31\n1.0000000000000002\n";
+  BOOST_TEST(contains(dxf_error(minimal_dxf(z), "L"), "LINE 2A is not parallel to the XY plane (z 1 and 1.0000000000000002)"));
 }
 
 // Numbers are read once: a value is a plain decimal ([sign] digits [. digits] [E [sign] digits]), which

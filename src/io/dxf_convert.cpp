@@ -125,7 +125,7 @@ class Converter {
   V ocs(const RawEntity& e, double x, double y) const { return mirrored(e) ? V(-x, y) : V(x, y); }
 
   void line(const RawEntity& e, Piece& piece) const {
-    if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + number(e.v[2]) + " and " + number(e.v[5]) + ")");
+    if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + exact_number(e.v[2]) + " and " + exact_number(e.v[5]) + ")");
     const V a(e.v[0], e.v[1]), b(e.v[3], e.v[4]);
     if (a == b) fail(e, "has zero length");
     piece.segments.push_back({{a, b}, {}});
@@ -133,7 +133,7 @@ class Converter {
 
   void arc(const RawEntity& e, Piece& piece) const {
     const double r = e.v[3];
-    if (!(r > 0)) fail(e, "has radius " + number(r) + "; it must be positive");
+    if (!(r > 0)) fail(e, "has radius " + exact_number(r) + "; it must be positive");
     double sweep = 2 * M_PI, t0 = 0;
     if (e.type == "ARC") {
       // DXF arcs run counter-clockwise from the start to the end angle; equal angles make a full circle.
@@ -148,9 +148,9 @@ class Converter {
   void ellipse(const RawEntity& e, Piece& piece) const {
     const V c(e.v[0], e.v[1]), M(e.v[3], e.v[4]);
     const double ratio = e.v[6];
-    if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + number(e.v[5]) + ")");
+    if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + exact_number(e.v[5]) + ")");
     if (!(M.norm() > 0)) fail(e, "has a zero major axis");
-    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + number(ratio) + "; it must be in (0, 1]");
+    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + exact_number(ratio) + "; it must be in (0, 1]");
     // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1).
     const V m = mirrored(e) ? V(ratio * M.y(), -ratio * M.x()) : V(-ratio * M.y(), ratio * M.x());
     const double t0 = std::fmod(e.v[7], 2 * M_PI);
