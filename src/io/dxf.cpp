@@ -119,9 +119,14 @@ std::optional<int> read_int(const std::string& text, std::string& problem) {
   return v;
 }
 
-bool real_code(unsigned c) { return (c >= 10 && c <= 59) || (c >= 110 && c <= 149) || (c >= 210 && c <= 239) || (c >= 1010 && c <= 1059); }
+// DXF reference, "Group code value types": every numeric range (280-299: 8-bit integers and booleans;
+// 420-429, 440-459: 32-bit integers; 460-469: reals).
+bool real_code(unsigned c) {
+  return (c >= 10 && c <= 59) || (c >= 110 && c <= 149) || (c >= 210 && c <= 239) || (c >= 460 && c <= 469) || (c >= 1010 && c <= 1059);
+}
 bool int_code(unsigned c) {
-  return (c >= 60 && c <= 99) || (c >= 160 && c <= 179) || (c >= 270 && c <= 299) || (c >= 370 && c <= 389) || (c >= 1060 && c <= 1071);
+  return (c >= 60 && c <= 99) || (c >= 160 && c <= 179) || (c >= 270 && c <= 299) || (c >= 370 && c <= 389) ||
+         (c >= 400 && c <= 409) || (c >= 420 && c <= 429) || (c >= 440 && c <= 459) || (c >= 1060 && c <= 1071);
 }
 
 }  // namespace dxf
