@@ -33,6 +33,9 @@ std::vector<Segment> affine_arc(double t0, double t1, const V& c, const V& M, co
   return segs;
 }
 
+/// Extrusion directions within this angle (radians) of +Z or -Z are +Z or -Z.
+constexpr double kExtrusionTolerance = 1e-12;
+
 /// Angles within this fraction of a turn of a whole turn count as a whole turn (rounding of written values).
 constexpr double kTurnTolerance = 1e-12;
 
@@ -61,9 +64,6 @@ double ccw_sweep(double from, double to, double turn) {
 //    the round-off of the vertices themselves (max(|a|, |b|) >= h);
 //  - a bulge above kLargestBulge is refused: the arc's ends are 2 / (|k| + 1 / |k|) of its diameter apart,
 //    below the join tolerance, and cannot be told from a whole circle.
-
-/// Extrusion directions within this angle (radians) of +Z or -Z are +Z or -Z.
-constexpr double kExtrusionTolerance = 1e-12;
 
 /// tan(pi / 8) = sqrt(2) - 1 (a quarter turn), with room for the rounding of the halving.
 constexpr double kQuarterTurnBulge = 0.41421356237310;
@@ -159,7 +159,7 @@ class Converter {
     piece.closed = full_turn(sweep);
   }
 
-  /// The piece from vertex a to vertex b with bulge `bulge` (dxf_bulge_pieces), or the error naming the vertex.
+  /// The piece from vertex a to vertex b with bulge `bulge` (append_bulge_pieces), or the error naming the vertex.
   void bulge_piece(const RawEntity& e, std::size_t vertex, const V& a, const V& b, double bulge, Piece& piece) const {
     if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(vertex));
     if (std::abs(bulge) > kLargestBulge)
