@@ -13,7 +13,7 @@ for each drawing, one block
     p X Y                       world (WCS) coordinates, repr() of the double
 
 Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them: one chain per layer), each a
-chain of 1 to 4 entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D
+closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4 entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D
 POLYLINE with bulges 0 or +-10^u for u in [-18, 3], rational SPLINE (degree 2 or 3, random weights and
 interior knots, clamped); ARC, ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
 The drawing's scale runs from 1e-2 to 1e4 and its offset is up to 10 times its scale.
@@ -161,11 +161,44 @@ class Drawing:
         pts = [(v.x, v.y) for v in (bs.point(lo + (hi - lo) * i / (3 * SAMPLES - 1)) for i in range(3 * SAMPLES))]
         return e, pts, pts[-1]
 
+    def closed(self, p, attribs):
+        """A closed entity, alone on its layer: CIRCLE, full ELLIPSE or closed LWPOLYLINE with bulges."""
+        n = self.extrusion()
+        kind = self.rng.choice(("circle", "ellipse", "lwpolyline"))
+        if kind == "circle":
+            e = self.msp.add_circle(to_ocs(p, n[2] < 0), self.scale * self.rng.uniform(0.2, 1),
+                                    dxfattribs={**attribs, "extrusion": n})
+            return e, [(v.x, v.y) for v in e.vertices([360.0 * i / (SAMPLES - 1) for i in range(SAMPLES)])]
+        if kind == "ellipse":
+            t = self.rng.uniform(0, 2 * math.pi)
+            a = self.scale * self.rng.uniform(0.3, 1)
+            e = self.msp.add_ellipse(p, (a * math.cos(t), a * math.sin(t), 0), self.rng.uniform(0.1, 1), 0, 2 * math.pi,
+                                     dxfattribs={**attribs, "extrusion": n})
+            return e, [(v.x, v.y) for v in e.vertices([2 * math.pi * i / (SAMPLES - 1) for i in range(SAMPLES)])]
+        mirrored = n[2] < 0
+        # a convex polygon around p (no self-intersection whatever the bulges' signs up to a half turn each)
+        count = self.rng.randint(2, 6)
+        angles = sorted(self.rng.uniform(0, 2 * math.pi) for _ in range(count))
+        r = self.scale * self.rng.uniform(0.3, 1)
+        ocs = [to_ocs((p[0] + r * math.cos(a), p[1] + r * math.sin(a)), mirrored) for a in angles]
+        bulges = [self.rng.choice((0.0, 10 ** self.rng.uniform(-18, 0), -10 ** self.rng.uniform(-18, -1))) for _ in ocs]
+        e = self.msp.add_lwpolyline([(q[0], q[1], k) for q, k in zip(ocs, bulges)], format="xyb", close=True,
+                                    dxfattribs={**attribs, "extrusion": n})
+        vertices = [(x, y, k) for x, y, _, _, k in e.get_points("xyseb")]
+        pts = []
+        for (x0, y0, k), (x1, y1, _) in zip(vertices, vertices[1:] + vertices[:1]):
+            pts += [to_ocs(q, mirrored) for q in bulge_points((x0, y0), (x1, y1), k)]
+        return e, pts
+
     def chain(self, name):
         attribs = {"layer": name}
         span = 10 * self.scale
         p = (self.rng.uniform(-span, span), self.rng.uniform(-span, span))
         entities = []
+        if self.rng.random() < 0.15:
+            e, pts = self.closed(p, attribs)
+            self.layers.append((name, [(f"{e.dxftype()} {e.dxf.handle}", pts)]))
+            return
         for k in range(self.rng.randint(1, 4)):
             kind = self.rng.choice(("line", "arc", "ellipse", "lwpolyline", "polyline", "spline"))
             if kind == "lwpolyline" or kind == "polyline":
