@@ -1,8 +1,8 @@
 // The DXF reader (io/dxf.hpp) against ezdxf on random valid drawings: tests/data/dxf/ezdxf_random.py writes
 // seeded drawings with python3-ezdxf (lines and arcs either way, partial ellipses, LWPOLYLINEs and 2D
 // POLYLINEs with bulges 0 and +-1e-18 .. 1e3, rational splines with random weights and knots, extrusion +Z
-// and -Z, 1 to 4 chains on their own layers, some a closed CIRCLE, ELLIPSE or LWPOLYLINE alone, scales 1e-2 .. 1e4) and prints ezdxf's own world-coordinate
-// points on each entity. Every chain read by rollkin must
+// and -Z, 1 to 4 chains on their own layers, some a closed CIRCLE, ELLIPSE or LWPOLYLINE alone, scales 1e-2
+// .. 1e4) and prints ezdxf's own world-coordinate points on each entity. Every chain read by rollkin must
 //   - consist of the same entities in the same order,
 //   - start where ezdxf's first entity starts, within 1e-12 of the chain's size,
 //   - pass within 1e-12 of the chain's size of every ezdxf point (to the segments of the entity the point
