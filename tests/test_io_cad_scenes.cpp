@@ -202,6 +202,45 @@ BOOST_AUTO_TEST_CASE(a_straight_run_of_collinear_vertices_is_one_line_for_every_
   }
 }
 
+// The same for arcs of one circle: a disk of radius 10 on an arm about the centre of a track of radius 500
+// drawn as 1,200 LWPOLYLINE arcs of 0.05 and 0.15 degrees in turn rolls over it (one arc of two pieces), every
+// pose ok, turning as the epicycloid's planet: psi - psi0 = (R / r) (phi - phi0) relative to the arm. Before, the
+// sweep stopped at its first step with no_convergence.
+BOOST_AUTO_TEST_CASE(a_run_of_arcs_of_one_circle_is_one_arc_for_a_rolling_disk) {
+  const double R = 500, r = 10, to_rad = M_PI / 180;
+  std::string groups = "0\nLWPOLYLINE\n5\n7C\n8\nT\n90\n1201\n70\n0\n";
+  double a = 150;
+  for (int k = 0; k <= 1200; ++k) {
+    const double next = a - (k % 2 ? 0.15 : 0.05);
+    groups += "10\n" + number(R * std::cos(a * to_rad)) + "\n20\n" + number(R * std::sin(a * to_rad)) + "\n42\n" +
+              number(k < 1200 ? std::tan((next - a) * to_rad / 4) : 0.0) + "\n";
+    a = next;
+  }
+  const std::string dxf = write_text(scratch_dir("io_cad_scenes") / "one_circle.dxf",
+                                     "0\nSECTION\n2\nENTITIES\n" + groups + "0\nENDSEC\n0\nEOF\n");
+  const std::string text =
+      "{\"units\": {\"length\": \"mm\", \"angle\": \"deg\"},\n"
+      " \"links\": [{\"name\": \"ground\", \"ground\": true, \"contours\": [{\"name\": \"track\", \"type\": \"dxf\", \"file\": \"" + dxf +
+      "\", \"layer\": \"T\", \"material\": \"right\"}]},\n"
+      "   {\"name\": \"arm\"}, {\"name\": \"disk\", \"contours\": [{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 10}]}],\n"
+      " \"pairs\": [{\"name\": \"A\", \"type\": \"revolute\", \"links\": [\"ground\", \"arm\"], \"variable\": \"phi\", \"value\": 90},\n"
+      "   {\"name\": \"H\", \"type\": \"revolute\", \"links\": [\"arm\", \"disk\"], \"at\": [{\"x\": 510}, {}], \"variable\": \"psi\", \"value\": 0},\n"
+      "   {\"name\": \"C\", \"type\": \"rolling\", \"contours\": [\"disk.rim\", \"ground.track\"], \"variables\": [\"u\", \"x\"], \"values\": [-90, -1]}],\n"
+      " \"inputs\": [\"A.phi\"], \"sweep\": {\"from\": 90, \"to\": 60, \"step\": -0.5}}\n";
+  const io::Scene s = scene_from("one_circle.json", text);
+  const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+  BOOST_TEST(domain.hi - domain.lo == 2.0);
+  const SweepResult<double> result = solved(s);
+  const int phi = s.mechanism.find_variable("A.phi"), psi = s.mechanism.find_variable("H.psi");
+  const double phi0 = result.poses.front().q(phi), psi0 = result.poses.front().q(psi);
+  double worst = 0;
+  for (const auto& pose : result.poses)
+    worst = std::max(worst, std::abs((pose.q(psi) - psi0) - R / r * (pose.q(phi) - phi0)));
+  BOOST_TEST_MESSAGE("arcs of one circle: " << result.poses.size() << " poses, |psi - psi0 - (R/r)(phi - phi0)| up to " << worst);
+  BOOST_TEST(result.poses.size() == 61u);
+  BOOST_TEST(worst < 1e-11);
+}
+
 // (d) The planet of examples/hypocycloid.json as an exact rational quadratic NURBS circle (9 control points,
 // weights 1 and sqrt(2)/2): the planet turns -3 phi absolutely, -4 phi relative to the arm (r = 1, R = 4).
 BOOST_AUTO_TEST_CASE(nurbs_circle_rolling_in_a_ring_is_the_hypocycloid) {

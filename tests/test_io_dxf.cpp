@@ -286,6 +286,45 @@ BOOST_AUTO_TEST_CASE(bulge_arcs_are_exact_for_every_bulge) {
               worst_read, worst_closed);
 }
 
+/// A LWPOLYLINE 7C on layer L through `points` with `bulges` (one per point, the last unused).
+std::string polyline_text(const std::vector<V>& points, const std::vector<double>& bulges) {
+  std::string groups = "0\nLWPOLYLINE\n5\n7C\n8\nL\n90\n" + std::to_string(points.size()) + "\n70\n0\n";
+  for (std::size_t i = 0; i < points.size(); ++i)
+    groups += "10\n" + exact(points[i].x()) + "\n20\n" + exact(points[i].y()) + "\n42\n" + exact(bulges[i]) + "\n";
+  return minimal_dxf(groups);
+}
+
+// Consecutive bulge arcs of one circle are one arc, as a straight run of lines is one line: 1,200 arcs of
+// 0.05 and 0.15 degrees in turn over 120 degrees of a circle of radius 500 become one arc of two 60-degree
+// pieces through every vertex (before, the native parameter's speed jumped at each vertex and a disk rolling
+// on it met no_convergence at its first step). Arcs turning the other way, or of another circle, stay apart.
+BOOST_AUTO_TEST_CASE(bulge_arcs_of_one_circle_are_one_arc) {
+  const double r = 500, to_rad = M_PI / 180;
+  std::vector<double> degrees{150};
+  for (int k = 0; degrees.back() > 30 + 1e-9; ++k) degrees.push_back(degrees.back() - (k % 2 ? 0.15 : 0.05));
+  std::vector<V> points;
+  std::vector<double> bulges;
+  for (std::size_t i = 0; i < degrees.size(); ++i) {
+    points.emplace_back(r * std::cos(degrees[i] * to_rad), r * std::sin(degrees[i] * to_rad));
+    bulges.push_back(i + 1 < degrees.size() ? std::tan((degrees[i + 1] - degrees[i]) * to_rad / 4) : 0.0);
+  }
+  const DxfContour c = rollkin::parse_dxf_contour(polyline_text(points, bulges), DxfSelection{"L", ""});
+  BOOST_TEST(c.segments.size() == 2u);
+  const BezierPath<double> path(c.segments, false);
+  double vertices = 0, circle = 0;
+  for (const V& q : points) vertices = std::max(vertices, rollkin::testing::distance_to_path(path, q) / (2 * r));
+  for (int k = 0; k <= 2000; ++k) circle = std::max(circle, std::abs(path.jet(2.0 * k / 2000, 0).p.norm() - r) / r);
+  std::printf("%zu arcs of one circle read as %zu pieces: vertices off the contour %.2e, contour off the circle %.2e (/ size)\n",
+              points.size() - 1, c.segments.size(), vertices, circle);
+  BOOST_TEST(vertices < 1e-12);
+  BOOST_TEST(circle < 1e-12);
+  // An S (the second arc turns the other way) and two tangent arcs of different radii (quarter arcs of radius
+  // 1 and 2) keep their pieces.
+  const double q = std::tan(M_PI / 8);
+  BOOST_TEST(rollkin::parse_dxf_contour(polyline_text({V(0, 0), V(1, 1), V(2, 2)}, {q, -q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
+  BOOST_TEST(rollkin::parse_dxf_contour(polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
+}
+
 // A bulge so large that the arc's ends are closer than the join tolerance of its own diameter cannot be told
 // from a whole circle: refused, naming the vertex and the bulge.
 BOOST_AUTO_TEST_CASE(a_bulge_indistinguishable_from_a_whole_circle_is_refused) {

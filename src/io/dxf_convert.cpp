@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <vector>
@@ -84,6 +85,50 @@ void append_bulge_pieces(const V& a, const V& b, double bulge, std::vector<Segme
   }
   const double k2 = bulge * bulge;
   out.push_back({{a, m - n * (bulge / (1 - k2)), b}, {1.0, (1 - k2) / (1 + k2), 1.0}});
+}
+
+/// Distance from p to the circle through a and c that bulge k (!= 0) makes, in the chord's frame (origin its
+/// middle, y its left normal, h half its length: centre (0, yc), signed radius r), without forming the
+/// centre: (|p - C|^2 - r^2) / (|p - C| + |r|), where yc^2 - r^2 = -h^2 exactly.
+double off_bulge_circle(const V& a, const V& c, double k, const V& p) {
+  const double h = (c - a).norm() / 2, yc = h * (1 - k * k) / (2 * k), r = h * (1 + k * k) / (2 * k);
+  const V along = (c - a) / (2 * h), left = perp(along), q = p - (a + c) / 2;
+  const double x = q.dot(along), y = q.dot(left);
+  return std::abs((x - h) * (x + h) + y * y - 2 * y * yc) / (std::hypot(x, y - yc) + std::abs(r));
+}
+
+/// Round-off of points: 16 eps of their largest coordinate.
+double round_off(std::initializer_list<V> points) {
+  double m = 0;
+  for (const V& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+  return 16 * std::numeric_limits<double>::epsilon() * m;
+}
+
+// Consecutive bulge arcs of one circle are one arc, one piece of the native parameter: along arcs of
+// different lengths on one circle its speed would jump at every vertex, as along a straight run of lines
+// (docs/scene_format.md, "Straight runs"). Arcs with bulges k and k' are one arc when they turn the same way,
+// together less than a whole turn, and their common vertex lies within round-off of the circle of the whole
+// arc, whose bulge is tan(theta / 4) for the sum of their angles: (k + k') / (1 - k k') (tangent addition).
+
+/// The bulge of an arc of bulge `whole` followed by one of bulge `next` taken as one, or 0 when they turn
+/// different ways, reach a whole turn, or exceed kLargestBulge together.
+double joined_bulge(double whole, double next) {
+  if (next == 0 || !std::isfinite(next) || (next > 0) != (whole > 0) || !(whole * next < 1)) return 0;
+  const double joined = (whole + next) / (1 - whole * next);
+  return std::abs(joined) <= kLargestBulge ? joined : 0;
+}
+
+/// Whether the vertices p[i + 1] .. p[j] lie on the circle of the arc p[i] -> p[j + 1] with bulge `whole`:
+/// within round-off and kOneArcTolerance of its chord (the tangent additions that give `whole` round at each
+/// arc: over a run of a thousand, its circle moves by some 1e-14 of its size).
+constexpr double kOneArcTolerance = 1e-12;
+bool on_arc_circle(const V& a, const V& c, double whole, const V& m) {
+  return off_bulge_circle(a, c, whole, m) <= round_off({a, m, c}) + kOneArcTolerance * (c - a).norm();
+}
+bool inner_vertices_on_arc(const std::vector<V>& p, std::size_t i, std::size_t j, double whole) {
+  for (std::size_t m = i + 1; m <= j; ++m)
+    if (!on_arc_circle(p[i], p[j + 1], whole, p[m])) return false;
+  return true;
 }
 
 class Converter {
@@ -187,12 +232,28 @@ class Converter {
     if (closed && vs.size() > 1 && vs.front().x == vs.back().x && vs.front().y == vs.back().y) vs.pop_back();
     const std::size_t n = vs.size(), pieces = closed ? n : n - 1;
     if (n < 2) fail(e, "has fewer than two distinct vertices");
-    for (std::size_t i = 0; i < pieces; ++i) {
-      const Vertex& v = vs[i];
-      const Vertex& w = vs[(i + 1) % n];
-      const V a = three_d ? V(v.x, v.y) : ocs(e, v.x, v.y), b = three_d ? V(w.x, w.y) : ocs(e, w.x, w.y);
+    std::vector<V> p;  // world points, the first again at the end of a closed polyline
+    std::vector<double> k;  // world bulges of the pieces
+    for (std::size_t i = 0; i <= pieces; ++i) {
+      const Vertex& v = vs[i % n];
+      p.push_back(three_d ? V(v.x, v.y) : ocs(e, v.x, v.y));
       // Mirroring the OCS x axis reverses the sense of rotation, hence the bulge's sign.
-      bulge_piece(e, i, a, b, three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge), piece);
+      if (i < pieces) k.push_back(three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge));
+    }
+    for (std::size_t i = 0; i < pieces;) {
+      // the longest run of arcs from piece i that are one arc (the start of a closed polyline stays a vertex)
+      std::size_t j = i;
+      double whole = k[i];
+      if (k[i] != 0 && std::abs(k[i]) <= kLargestBulge)
+        for (std::size_t next = i + 1; next < pieces; ++next) {
+          const double joined = joined_bulge(whole, k[next]);
+          if (joined == 0 || !on_arc_circle(p[i], p[next + 1], joined, p[next])) break;
+          j = next;
+          whole = joined;
+        }
+      if (j > i && !inner_vertices_on_arc(p, i, j, whole)) j = i, whole = k[i];  // drifted off one circle
+      bulge_piece(e, i, p[i], p[j + 1], whole, piece);
+      i = j + 1;
     }
     piece.closed = closed;
   }
