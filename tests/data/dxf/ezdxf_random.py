@@ -12,10 +12,11 @@ for each drawing, one block
     entity TYPE HANDLE          an entity of the chain, then the points on it in its own direction:
     p X Y                       world (WCS) coordinates, repr() of the double
 
-Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them: one chain per layer), each a
-closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4 entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D
-POLYLINE with bulges 0 or +-10^u for u in [-18, 3], rational SPLINE (degree 2 or 3, random weights and
-interior knots, clamped); ARC, ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
+Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them: one chain per layer), each
+a closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4
+entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D POLYLINE with bulges
+0 or +-10^u for u in [-18, 3] (a quarter of them 2 to 30 arcs of one circle turning one way, which rollkin
+reads as one arc), rational SPLINE (degree 2 or 3, random weights and interior knots, clamped); ARC, ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
 The drawing's scale runs from 1e-2 to 1e4 and its offset is up to 10 times its scale.
 
 The points are ezdxf's: arc.vertices(), ellipse.vertices(), spline.construction_tool().point(u) (in double,
@@ -123,15 +124,30 @@ class Drawing:
         pts = [(v.x, v.y) for v in e.vertices([s + (f - s) * i / (SAMPLES - 1) for i in range(SAMPLES)])]
         return e, pts, pts[-1]
 
+    def one_circle(self, p, mirrored):
+        """OCS vertices from p on one circle, arcs of random angles turning one way, and their bulges."""
+        po = to_ocs(p, mirrored)
+        r, at = self.scale * self.rng.uniform(0.2, 1), self.rng.uniform(0, 2 * math.pi)
+        c = (po[0] - r * math.cos(at), po[1] - r * math.sin(at))
+        sign = self.rng.choice((-1, 1))
+        angles = [at]
+        for _ in range(self.rng.randint(2, 30)):
+            angles.append(angles[-1] + sign * self.rng.uniform(0.001, 5.5) / 30)
+        ocs = [po] + [(c[0] + r * math.cos(a), c[1] + r * math.sin(a)) for a in angles[1:]]
+        return ocs, [math.tan((b - a) / 4) for a, b in zip(angles, angles[1:])] + [0.0]
+
     def polyline(self, p, attribs, lw):
         n = self.extrusion()
         mirrored = n[2] < 0
-        wcs = [p]
-        for _ in range(self.rng.randint(1, 4)):
-            d = self.step()
-            wcs.append((wcs[-1][0] + d[0], wcs[-1][1] + d[1]))
-        ocs = [to_ocs(q, mirrored) for q in wcs]
-        bulges = [self.bulge() for _ in ocs[:-1]] + [0.0]
+        if self.rng.random() < 0.25:  # arcs of one circle (rollkin reads them as one arc)
+            ocs, bulges = self.one_circle(p, mirrored)
+        else:
+            wcs = [p]
+            for _ in range(self.rng.randint(1, 4)):
+                d = self.step()
+                wcs.append((wcs[-1][0] + d[0], wcs[-1][1] + d[1]))
+            ocs = [to_ocs(q, mirrored) for q in wcs]
+            bulges = [self.bulge() for _ in ocs[:-1]] + [0.0]
         points = [(q[0], q[1], k) for q, k in zip(ocs, bulges)]
         if lw:
             e = self.msp.add_lwpolyline(points, format="xyb", dxfattribs={**attribs, "extrusion": n})
