@@ -16,7 +16,8 @@ Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them
 a closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4
 entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D POLYLINE with bulges
 0 or +-10^u for u in [-18, 3] (a quarter of them 2 to 30 arcs of one circle turning one way, which rollkin
-reads as one arc), rational SPLINE (degree 2 or 3, random weights and interior knots, clamped); ARC, ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
+reads as one arc), rational SPLINE (degree 2 or 3, random weights and interior knots, clamped); ARC,
+ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
 The drawing's scale runs from 1e-2 to 1e4 and its offset is up to 10 times its scale.
 
 The points are ezdxf's: arc.vertices(), ellipse.vertices(), spline.construction_tool().point(u) (in double,
