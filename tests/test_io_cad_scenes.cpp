@@ -202,6 +202,22 @@ BOOST_AUTO_TEST_CASE(a_straight_run_of_collinear_vertices_is_one_line_for_every_
   }
 }
 
+// A run whose every joint is within round-off of its neighbours' line but which bends away from its chord
+// (y = 1e-16 (x - 500)^2 through 1001 vertices: 2.5e-11 off the chord, more than its round-off) is not one
+// line: its pieces stay as drawn.
+BOOST_AUTO_TEST_CASE(a_run_that_bends_off_its_chord_keeps_its_pieces) {
+  std::string d = "M 0 0";
+  for (int k = 0; k <= 1000; ++k) d += (k ? " L " : " M ") + number(k) + " " + number(1e-16 * (k - 500.0) * (k - 500.0));
+  d = d.substr(std::string("M 0 0 ").size());
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "bend.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 1000 10\">\n  <path id=\"bend\" d=\"" + d + "\"/>\n</svg>\n");
+  std::string text = replaced(read_text(kExamples + "cycloid.json"), "\"type\": \"line\", \"from\": -10, \"to\": 10,",
+                              "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"bend\",");
+  const io::Scene s = scene_from("bend.json", text);
+  const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+  BOOST_TEST(domain.hi - domain.lo == 1000.0);
+}
+
 // The same for arcs of one circle: a disk of radius 10 on an arm about the centre of a track of radius 500
 // drawn as 1,200 LWPOLYLINE arcs of 0.05 and 0.15 degrees in turn rolls over it (one arc of two pieces), every
 // pose ok, turning as the epicycloid's planet: psi - psi0 = (R / r) (phi - phi0) relative to the arm. Before, the

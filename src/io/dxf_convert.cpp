@@ -251,9 +251,12 @@ class Converter {
           j = next;
           whole = joined;
         }
-      if (j > i && !inner_vertices_on_arc(p, i, j, whole)) j = i, whole = k[i];  // drifted off one circle
-      bulge_piece(e, i, p[i], p[j + 1], whole, piece);
-      i = j + 1;
+      if (j > i && !inner_vertices_on_arc(p, i, j, whole)) {  // drifted off one circle: the arcs as drawn
+        for (std::size_t m = i; m <= j; ++m) bulge_piece(e, m, p[m], p[m + 1], k[m], piece);
+      } else {
+        bulge_piece(e, i, p[i], p[j + 1], whole, piece);
+      }
+      i = j + 1;  // each vertex is looked at once or twice: linear in the vertices
     }
     piece.closed = closed;
   }

@@ -154,12 +154,13 @@ std::vector<std::size_t> join_straight_runs(std::vector<BezierSegment<double>>& 
     if (j > i && straight) {
       joined.push_back({{a, c}, {}});
       first.push_back(i);
-      i = j + 1;
-    } else {
-      joined.push_back(segments[i]);
-      first.push_back(i);
-      ++i;
+    } else {  // a drift off the chord: the pieces as drawn
+      for (std::size_t k = i; k <= j; ++k) {
+        joined.push_back(segments[k]);
+        first.push_back(k);
+      }
     }
+    i = j + 1;  // each piece is looked at once or twice: linear in the pieces
   }
   segments = std::move(joined);
   return first;
