@@ -29,8 +29,8 @@ log() { echo "[setup] $*" >&2; }
 # Compiler and build tools, then the libraries (headers + CMake package files): Eigen 3.4, Boost 1.74 headers
 # and Boost.Test, CGAL 5.5 (header-only), GMP and MPFR, nlohmann/json; libdxflib (DXF) and pugixml (SVG/XML)
 # readers; CLI11 (command-line parsing of build/rollkin and the benchmark); SuiteSparse (KLU, the sparse LU of
-# large mechanisms; optional for the build). For the tests only: ezdxf and
-# svgelements, independent producers and readers of the CAD test files; chromium, its driver and selenium for
+# large mechanisms; optional for the build). For the tests only: ezdxf (with mpmath for its bulge arcs in
+# 60 digits) and svgelements, independent producers and readers of the CAD test files; chromium, its driver and selenium for
 # the browser test of the --animate page (tests/browser/test_animation.py).
 packages=(
   g++ cmake make ccache
@@ -40,7 +40,7 @@ packages=(
   python3
 )
 if [[ "$what" == all ]]; then
-  packages+=(python3-ezdxf python3-svgelements chromium chromium-driver python3-selenium)
+  packages+=(python3-ezdxf python3-mpmath python3-svgelements chromium chromium-driver python3-selenium)
   packages+=(pybind11-dev python3-pybind11 python3-numpy python3-pytest)  # the Python module and its test
   packages+=(python3-scipy python3-distributed python3-matplotlib)  # examples/python (fit_profile.py, design_study.py), tested
 fi

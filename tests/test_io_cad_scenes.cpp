@@ -167,6 +167,96 @@ BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cyclo
   BOOST_TEST(closed_form < 1e-9 * kDeg);
 }
 
+// A straight run drawn through many collinear vertices of different spacing is one line: a disk rolls along
+// it on the native parameter, every pose ok, as on an analytic line (the cycloid: disk angle = -travel / r).
+// Before, the parameter's speed jumped at every vertex (2.5 and 7.5 mm pieces in turn) and the sweep stopped
+// with no_convergence after 1.14 m (300,000 such vertices: `singular` poses). For every reader that builds a
+// path: the DXF LWPOLYLINE of 2001 vertices (straight_mm.dxf, RUN) and the same run as an SVG path.
+BOOST_AUTO_TEST_CASE(a_straight_run_of_collinear_vertices_is_one_line_for_every_reader) {
+  const std::string middle = read_text(kDxf + "straight_mm.RUN.txt");
+  BOOST_REQUIRE(contains(middle, "# vertices 2001") && contains(middle, "# middle_vertex 1000"));
+  std::string d = "M -5000 0";
+  for (int k = 0; k < 2000; ++k) d += " L " + number(-5000 + 5 * k + (k % 2 ? 5 : 2.5)) + " 0";  // 2.5, 7.5 mm in turn
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "run.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10000mm\" height=\"20mm\" viewBox=\"0 0 10000 20\">\n"
+      "  <path id=\"run\" d=\"" + d + "\"/>\n</svg>\n");
+  const std::string tracks[] = {"\"type\": \"dxf\", \"file\": \"" + kDxf + "straight_mm.dxf\", \"layer\": \"RUN\",",
+                                "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"run\","};
+  for (const std::string& track : tracks) {
+    BOOST_TEST_CONTEXT(track) {
+      std::string text = replaced(read_text(kExamples + "cycloid.json"), "\"type\": \"line\", \"from\": -10, \"to\": 10,", track);
+      // One line piece, reversed by "material": "right": its middle at -0.5. Three quarters of a turn (4.7 m).
+      text = replaced(text, "\"values\": [-90, 0]", "\"values\": [-90, -0.5]");
+      text = replaced(text, "\"to\": 6.283185307179586", "\"to\": " + number(1.5 * M_PI));
+      const io::Scene s = scene_from("straight_run.json", text);
+      const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+      BOOST_TEST(domain.hi - domain.lo == 1.0);
+      const SweepResult<double> r = solved(s);
+      const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+      double closed_form = 0;
+      for (const auto& pose : r.poses) closed_form = std::max(closed_form, std::abs(pose.q(turn) + pose.q(travel)));
+      BOOST_TEST_MESSAGE("straight run: " << r.poses.size() << " poses, |psi + s / r| up to " << closed_form);
+      BOOST_TEST(r.poses.size() == 16u);
+      BOOST_TEST(closed_form < 1e-12);
+    }
+  }
+}
+
+// A run whose every joint is within round-off of its neighbours' line but which bends away from its chord
+// (y = 1e-16 (x - 500)^2 through 1001 vertices: 2.5e-11 off the chord, more than its round-off) is not one
+// line: its pieces stay as drawn.
+BOOST_AUTO_TEST_CASE(a_run_that_bends_off_its_chord_keeps_its_pieces) {
+  std::string d = "M 0 0";
+  for (int k = 0; k <= 1000; ++k) d += (k ? " L " : " M ") + number(k) + " " + number(1e-16 * (k - 500.0) * (k - 500.0));
+  d = d.substr(std::string("M 0 0 ").size());
+  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "bend.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 1000 10\">\n  <path id=\"bend\" d=\"" + d + "\"/>\n</svg>\n");
+  std::string text = replaced(read_text(kExamples + "cycloid.json"), "\"type\": \"line\", \"from\": -10, \"to\": 10,",
+                              "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"bend\",");
+  const io::Scene s = scene_from("bend.json", text);
+  const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+  BOOST_TEST(domain.hi - domain.lo == 1000.0);
+}
+
+// The same for arcs of one circle: a disk of radius 10 on an arm about the centre of a track of radius 500
+// drawn as 1,200 LWPOLYLINE arcs of 0.05 and 0.15 degrees in turn rolls over it (one arc of two pieces), every
+// pose ok, turning as the epicycloid's planet: psi - psi0 = (R / r) (phi - phi0) relative to the arm. Before, the
+// sweep stopped at its first step with no_convergence.
+BOOST_AUTO_TEST_CASE(a_run_of_arcs_of_one_circle_is_one_arc_for_a_rolling_disk) {
+  const double R = 500, r = 10, to_rad = M_PI / 180;
+  std::string groups = "0\nLWPOLYLINE\n5\n7C\n8\nT\n90\n1201\n70\n0\n";
+  double a = 150;
+  for (int k = 0; k <= 1200; ++k) {
+    const double next = a - (k % 2 ? 0.15 : 0.05);
+    groups += "10\n" + number(R * std::cos(a * to_rad)) + "\n20\n" + number(R * std::sin(a * to_rad)) + "\n42\n" +
+              number(k < 1200 ? std::tan((next - a) * to_rad / 4) : 0.0) + "\n";
+    a = next;
+  }
+  const std::string dxf = write_text(scratch_dir("io_cad_scenes") / "one_circle.dxf",
+                                     "0\nSECTION\n2\nENTITIES\n" + groups + "0\nENDSEC\n0\nEOF\n");
+  const std::string text =
+      "{\"units\": {\"length\": \"mm\", \"angle\": \"deg\"},\n"
+      " \"links\": [{\"name\": \"ground\", \"ground\": true, \"contours\": [{\"name\": \"track\", \"type\": \"dxf\", \"file\": \"" + dxf +
+      "\", \"layer\": \"T\", \"material\": \"right\"}]},\n"
+      "   {\"name\": \"arm\"}, {\"name\": \"disk\", \"contours\": [{\"name\": \"rim\", \"type\": \"circle\", \"radius\": 10}]}],\n"
+      " \"pairs\": [{\"name\": \"A\", \"type\": \"revolute\", \"links\": [\"ground\", \"arm\"], \"variable\": \"phi\", \"value\": 90},\n"
+      "   {\"name\": \"H\", \"type\": \"revolute\", \"links\": [\"arm\", \"disk\"], \"at\": [{\"x\": 510}, {}], \"variable\": \"psi\", \"value\": 0},\n"
+      "   {\"name\": \"C\", \"type\": \"rolling\", \"contours\": [\"disk.rim\", \"ground.track\"], \"variables\": [\"u\", \"x\"], \"values\": [-90, -1]}],\n"
+      " \"inputs\": [\"A.phi\"], \"sweep\": {\"from\": 90, \"to\": 60, \"step\": -0.5}}\n";
+  const io::Scene s = scene_from("one_circle.json", text);
+  const Domain<double> domain = s.mechanism.contours[s.mechanism.find_contour("ground.track")].domain();
+  BOOST_TEST(domain.hi - domain.lo == 2.0);
+  const SweepResult<double> result = solved(s);
+  const int phi = s.mechanism.find_variable("A.phi"), psi = s.mechanism.find_variable("H.psi");
+  const double phi0 = result.poses.front().q(phi), psi0 = result.poses.front().q(psi);
+  double worst = 0;
+  for (const auto& pose : result.poses)
+    worst = std::max(worst, std::abs((pose.q(psi) - psi0) - R / r * (pose.q(phi) - phi0)));
+  BOOST_TEST_MESSAGE("arcs of one circle: " << result.poses.size() << " poses, |psi - psi0 - (R/r)(phi - phi0)| up to " << worst);
+  BOOST_TEST(result.poses.size() == 61u);
+  BOOST_TEST(worst < 1e-11);
+}
+
 // (d) The planet of examples/hypocycloid.json as an exact rational quadratic NURBS circle (9 control points,
 // weights 1 and sqrt(2)/2): the planet turns -3 phi absolutely, -4 phi relative to the arm (r = 1, R = 4).
 BOOST_AUTO_TEST_CASE(nurbs_circle_rolling_in_a_ring_is_the_hypocycloid) {

@@ -4,18 +4,22 @@
 // the selection, the units and the entry points.
 #include "dxf_collector.hpp"
 
+#include "rollkin/io/csv.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
+#include <charconv>
+#include <limits>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <sstream>
 
@@ -27,6 +31,7 @@ std::string number(double x) {
   std::snprintf(buf, sizeof buf, "%.10g", x);
   return buf;
 }
+std::string exact_number(double x) { return io::format_double(x); }
 std::string point_text(const V& p) { return "(" + number(p.x()) + ", " + number(p.y()) + ")"; }
 
 std::string upper(std::string s) {
@@ -41,26 +46,87 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a);
 }
 
-bool parse_long(const std::string& text, long& out) {
-  const std::string t = trim(text);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtol(t.c_str(), &end, 10);
-  return errno == 0 && end == t.c_str() + t.size();
+namespace {
+
+/// Whether `t` is [sign] digits [. digits] [e|E [sign] digits] with at least one mantissa digit (a leading or
+/// trailing point allowed: ".5", "5."), or, without point and exponent, an integer.
+bool plain_decimal(const std::string& t, bool integer) {
+  std::size_t i = 0, digits = 0;
+  auto sign = [&] { if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i; };
+  auto run = [&] {
+    const std::size_t from = i;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i;
+    return i - from;
+  };
+  sign();
+  digits = run();
+  if (!integer && i < t.size() && t[i] == '.') {
+    ++i;
+    digits += run();
+  }
+  if (digits == 0) return false;
+  if (!integer && i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    sign();
+    if (run() == 0) return false;
+  }
+  return i == t.size();
 }
 
-bool parse_real(const std::string& text) {
-  const std::string t = trim(text);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  return end == t.c_str() + t.size() && std::isfinite(v);
+/// std::from_chars over a plain decimal, without the '+' it does not take.
+template <class T> std::from_chars_result from_decimal(const std::string& t, T& out) {
+  const char* first = t.data() + (t[0] == '+' ? 1 : 0);
+  return std::from_chars(first, t.data() + t.size(), out);
 }
 
-bool real_code(unsigned c) { return (c >= 10 && c <= 59) || (c >= 110 && c <= 149) || (c >= 210 && c <= 239) || (c >= 1010 && c <= 1059); }
+}  // namespace
+
+// libdxflib converts a real with std::istringstream >> double after replacing ',' by '.' (DL_Dxf::toReal) and
+// an integer with strtol cast to int (DL_Dxf::toInt). Both read a plain decimal exactly as std::from_chars
+// does (correctly rounded); anything else they read otherwise or partly (hexadecimal "0x1p8" as 0, "1.5abc"
+// as 1.5, "1e" as 0) or truncate (99999999999 to 1215752191). So a value is accepted only as a plain decimal
+// in range, and its text is converted once here: the value checked is the value libdxflib uses.
+std::optional<double> read_real(const std::string& text, std::string& problem) {
+  const std::string t = trim(text);
+  double v = 0;
+  if (!plain_decimal(t, false)) {
+    problem = "is not a decimal number ([sign] digits [. digits] [E [sign] digits]; write a decimal point, not a comma): "
+              "libdxflib would read it as " + exact_number(DL_Dxf().toReal(t));
+    return std::nullopt;
+  }
+  const std::from_chars_result r = from_decimal(t, v);
+  if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v)) {
+    problem = "is out of the range of a double (magnitude 2.2e-308 to 1.8e+308, or 0)";
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<int> read_int(const std::string& text, std::string& problem) {
+  const std::string t = trim(text);
+  int v = 0;
+  if (!plain_decimal(t, true)) {
+    problem = "is not an integer ([sign] digits): libdxflib would read it as " + std::to_string(DL_Dxf().toInt(t));
+    return std::nullopt;
+  }
+  const std::from_chars_result r = from_decimal(t, v);
+  if (r.ec != std::errc() || r.ptr != t.data() + t.size()) {
+    problem = "is out of the range of a DXF integer (" + std::to_string(std::numeric_limits<int>::min()) + " to " +
+              std::to_string(std::numeric_limits<int>::max()) + "): libdxflib would read it as " +
+              std::to_string(DL_Dxf().toInt(t));
+    return std::nullopt;
+  }
+  return v;
+}
+
+// DXF reference, "Group code value types": every numeric range (280-299: 8-bit integers and booleans;
+// 420-429, 440-459: 32-bit integers; 460-469: reals).
+bool real_code(unsigned c) {
+  return (c >= 10 && c <= 59) || (c >= 110 && c <= 149) || (c >= 210 && c <= 239) || (c >= 460 && c <= 469) || (c >= 1010 && c <= 1059);
+}
 bool int_code(unsigned c) {
-  return (c >= 60 && c <= 99) || (c >= 160 && c <= 179) || (c >= 270 && c <= 289) || (c >= 370 && c <= 389) || (c >= 1060 && c <= 1071);
+  return (c >= 60 && c <= 99) || (c >= 160 && c <= 179) || (c >= 270 && c <= 299) || (c >= 370 && c <= 389) ||
+         (c >= 400 && c <= 409) || (c >= 420 && c <= 429) || (c >= 440 && c <= 459) || (c >= 1060 && c <= 1071);
 }
 
 }  // namespace dxf
@@ -87,9 +153,10 @@ std::size_t check_group_structure(const std::string& text, const std::string& fi
                        "line of " + std::to_string(content.size()) + " characters; DXF lines are at most " +
                            std::to_string(kMaxLine) + " characters here");
     if (line % 2 == 1) {
-      long code = 0;
+      std::string problem;
       const bool last_blank = eol >= text.size() - 1 && trim(content).empty();
-      if (!last_blank && (!parse_long(content, code) || code < 0 || code > 1071))
+      const std::optional<int> code = last_blank ? std::nullopt : read_int(content, problem);
+      if (!last_blank && (!code || *code < 0 || *code > 1071))
         throw InputError(file, "line " + std::to_string(line),
                          "expected a group code (an integer 0..1071), got \"" + trim(content).substr(0, 40) + "\"");
       if (!last_blank) ++pairs;
@@ -114,6 +181,24 @@ void set_units(DxfContour& out, const Collector& collector, const std::string& f
       throw InputError(file, "$INSUNITS",
                        "drawing unit code " + std::to_string(out.insunits) +
                            " is not supported; use 0 (unitless), 1 (in), 2 (ft), 4 (mm), 5 (cm) or 6 (m)");
+  }
+}
+
+/// A handle (group 5) names one entity of the drawing: two entities of the ENTITIES section with the same
+/// handle (compared case-insensitively, as selection compares them) make the file invalid, whichever layer
+/// either is on, since selecting by that handle would take both.
+void check_unique_handles(const std::vector<RawEntity>& all, const std::string& file) {
+  std::map<std::string, const RawEntity*> first;
+  for (const RawEntity& e : all) {
+    if (e.handle.empty()) continue;
+    const auto [it, fresh] = first.emplace(upper(e.handle), &e);
+    if (fresh) continue;
+    const RawEntity& a = *it->second;
+    auto where = [](const RawEntity& x) { return x.label() + " (line " + std::to_string(x.line) + ", layer \"" + x.layer + "\")"; };
+    throw InputError(file, "line " + std::to_string(e.line),
+                     where(a) + " and " + where(e) + " have the same handle " + e.handle +
+                         "; a handle (group 5) names one entity: give one of them a new handle (a CAD program's audit or "
+                         "save does)");
   }
 }
 
@@ -204,22 +289,25 @@ class TempFile {
 /// libdxflib reads: an exception thrown through DL_Dxf::in leaves its FILE open (fuzz_dxf ran out of file
 /// descriptors after some 10^5 rejected inputs), so every input error is found here first.
 void check_groups_before_reading(const std::string& text, Collector& dry) {
-  std::size_t pos = 0;
-  auto next_line = [&](std::string& line) {
+  std::size_t pos = 0, line = 0;
+  auto next_line = [&](std::string& content) {
     if (pos >= text.size()) return false;
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
-    line = text.substr(pos, eol - pos);
+    content = text.substr(pos, eol - pos);
     pos = eol + 1;
+    ++line;
     return true;
   };
-  std::string code_line, value;
-  while (next_line(code_line) && next_line(value)) {
-    long code = 0;
-    if (!parse_long(code_line, code)) return;  // only a trailing blank line (check_group_structure)
-    dry.processCodeValuePair(static_cast<unsigned>(code), value);
-    if (code == 0 && trim(value) == "EOF") return;
+  std::string code_line, value, problem;
+  while (next_line(code_line)) {
+    const std::optional<int> code = read_int(code_line, problem);
+    if (!code) break;  // only a trailing blank line (check_group_structure)
+    if (!next_line(value)) dry.text_ended(line, *code);
+    dry.processCodeValuePair(static_cast<unsigned>(*code), value);
+    if (*code == 0 && trim(value) == "EOF") return;
   }
+  dry.text_ended(line, -1);
 }
 
 /// `text` is the content of the file at `disk_path`, which libdxflib reads (its FILE* reader is the one that
@@ -238,6 +326,7 @@ DxfContour contour_from(const std::string& text, const std::string& disk_path, c
   }
   DxfContour out;
   set_units(out, collector, file);
+  check_unique_handles(collector.entities, file);
   const std::vector<const RawEntity*> chosen = select(collector.entities, selection, file);
 
   std::vector<Piece> pieces;

@@ -9,7 +9,9 @@
 #include <dxflib/dl_creationadapter.h>
 #include <dxflib/dl_dxf.h>
 
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rollkin::dxf {
@@ -39,17 +41,15 @@ class Collector : public DL_CreationAdapter {
     if (section_ == "HEADER") {
       if (code == 9) header_variable_ = trim(value);
       if (header_variable_ == "$INSUNITS" && code == 70) {
-        long u = 0;
-        if (!parse_long(value, u)) throw InputError(file_, "line " + std::to_string(line + 1), "$INSUNITS \"" + value + "\" is not an integer");
+        insunits = number_or_fail<int>(code, value, line, "$INSUNITS");
+        has_insunits = true;
       }
       return;
     }
     if (section_ != "ENTITIES" || current_ < 0) return;
     RawEntity& e = entities[static_cast<std::size_t>(current_)];
-    if ((real_code(code) && !parse_real(value)) || (int_code(code) && !parse_long(value, dummy_)))
-      throw InputError(file_, "line " + std::to_string(line + 1),
-                       e.label() + ": group " + std::to_string(code) + " value \"" + trim(value).substr(0, 40) + "\" is not " +
-                           (real_code(code) ? "a finite number" : "an integer"));
+    if (real_code(code)) number_or_fail<double>(code, value, line, e.label());
+    if (int_code(code)) number_or_fail<int>(code, value, line, e.label());
     if (in_sequence_) return;  // VERTEX, ATTRIB, SEQEND of a POLYLINE or INSERT: libdxflib reports them
     // libdxflib stores an LWPOLYLINE's vertices and bulges in an array sized by group 90 and indexed from the
     // last group 10: a vertex before the count, or a bulge before the first vertex, would be written outside it.
@@ -73,11 +73,22 @@ class Collector : public DL_CreationAdapter {
     }
   }
 
-  void setVariableInt(const std::string& key, int value, int) override {
-    if (key == "$INSUNITS") {
-      has_insunits = true;
-      insunits = value;
+  /// The text ended at `line` (1-based; the code line of a group without a value when `code` >= 0) before
+  /// group 0 EOF. An entity of the ENTITIES section still open there is cut short: libdxflib would drop it.
+  void text_ended(std::size_t line, int code) const {
+    std::string inside;
+    if (section_ == "ENTITIES" && current_ >= 0) {
+      const RawEntity& e = entities[static_cast<std::size_t>(current_)];
+      inside = " inside entity " + e.label() + (e.handle.empty() ? "" : " (line " + std::to_string(e.line) + ")");
     }
+    if (code >= 0)
+      throw InputError(file_, "line " + std::to_string(line),
+                       "the file ends" + inside + " after group code " + std::to_string(code) +
+                           " without its value: the DXF is cut short; export it again");
+    if (!inside.empty())
+      throw InputError(file_, "line " + std::to_string(line),
+                       "the file ends" + inside + ": the DXF is cut short (an entity ends at the next group 0, the "
+                       "file with 0 ENDSEC and 0 EOF); export it again");
   }
 
   void addLine(const DL_LineData& d) override {
@@ -96,7 +107,7 @@ class Collector : public DL_CreationAdapter {
     if (RawEntity* e = target()) e->flags = d.flags;
   }
   void addVertex(const DL_VertexData& d) override {
-    if (RawEntity* e = target()) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
+    if (RawEntity* e = target(false)) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
   }
   void addSpline(const DL_SplineData& d) override {
     if (RawEntity* e = target()) {
@@ -113,13 +124,18 @@ class Collector : public DL_CreationAdapter {
 
  private:
   /// The entity a callback belongs to: the one whose end (the next group 0) libdxflib is processing, when it
-  /// lies in the ENTITIES section; records that its geometry arrived and the extrusion libdxflib set for it.
-  RawEntity* target() {
+  /// lies in the ENTITIES section; records that its geometry arrived and, from the entity's own callback
+  /// (`own`), the extrusion libdxflib set for it. A POLYLINE's VERTEX callbacks come with the VERTEX's
+  /// extrusion, (0, 0, 1) by default: the POLYLINE's own (group 210 of the POLYLINE) must not be replaced by
+  /// it (ezdxf_random.py's mirrored POLYLINEs were read unmirrored).
+  RawEntity* target(bool own = true) {
     if (target_ < 0) return nullptr;
     RawEntity& e = entities[static_cast<std::size_t>(target_)];
     e.delivered = true;
-    const double* dir = getExtrusion()->getDirection();
-    e.extrusion = {dir[0], dir[1], dir[2]};
+    if (own) {
+      const double* dir = getExtrusion()->getDirection();
+      e.extrusion = {dir[0], dir[1], dir[2]};
+    }
     return &e;
   }
 
@@ -133,21 +149,34 @@ class Collector : public DL_CreationAdapter {
 
   /// Such a count must be an integer between 0 and the number of groups in the file.
   void bounded_count(unsigned code, const std::string& value, std::size_t line) const {
-    long n = 0;
-    if (!parse_long(value, n) || n < 0 || static_cast<std::size_t>(n) > pairs_)
+    std::string problem;
+    const std::optional<int> n = read_int(value, problem);
+    if (!n || *n < 0 || static_cast<std::size_t>(*n) > pairs_)
       throw InputError(file_, "line " + std::to_string(line + 1),
                        entity_type_ + ": group " + std::to_string(code) + " count \"" + trim(value).substr(0, 40) +
                            "\" is impossible (not an integer from 0 to the file's " + std::to_string(pairs_) + " groups)");
   }
 
   long count_value(const RawEntity& e, unsigned code, const std::string& value, std::size_t line) {
-    long n = 0;
-    parse_long(value, n);
+    const long n = number_or_fail<int>(code, value, line, e.label());
     if (n < 0 || static_cast<std::size_t>(n) > pairs_)
       throw InputError(file_, "line " + std::to_string(line + 1),
                        e.label() + ": group " + std::to_string(code) + " count " + std::to_string(n) +
                            " is impossible (negative or more than the file's " + std::to_string(pairs_) + " groups)");
     return n;
+  }
+
+  /// A group's value as a number (read_real, read_int): the one reading of it, libdxflib's too; an InputError
+  /// naming `who`, the group, the value's line and the value otherwise.
+  template <class T> T number_or_fail(unsigned code, const std::string& value, std::size_t line, const std::string& who) const {
+    std::string problem;
+    std::optional<T> v;
+    if constexpr (std::is_same_v<T, double>) v = read_real(value, problem);
+    else v = read_int(value, problem);
+    if (!v)
+      throw InputError(file_, "line " + std::to_string(line + 1),
+                       who + ": group " + std::to_string(code) + " value \"" + excerpt(trim(value), 40) + "\" " + problem);
+    return *v;
   }
 
   void entity_start(const std::string& type, std::size_t line) {
@@ -201,7 +230,7 @@ class Collector : public DL_CreationAdapter {
   std::size_t pairs_, pair_ = 0;
   std::string section_, header_variable_, entity_type_;  // entity_type_: of the last group 0, any section
   bool expect_section_name_ = false, in_sequence_ = false;
-  long current_ = -1, target_ = -1, dummy_ = 0;
+  long current_ = -1, target_ = -1;
 };
 
 }  // namespace rollkin::dxf

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ std::vector<Segment> affine_arc(double t0, double t1, const V& c, const V& M, co
   return segs;
 }
 
+/// Extrusion directions within this angle (radians) of +Z or -Z are +Z or -Z.
+constexpr double kExtrusionTolerance = 1e-12;
+
 /// Angles within this fraction of a turn of a whole turn count as a whole turn (rounding of written values).
 constexpr double kTurnTolerance = 1e-12;
 
@@ -43,6 +48,87 @@ double ccw_sweep(double from, double to, double turn) {
   double sweep = std::fmod(to - from, turn);
   if (sweep <= turn * kTurnTolerance) sweep += turn;
   return sweep;
+}
+
+// ---- polyline bulges (docs/scene_format.md, "dxf contours") -------------------------------------------------
+//
+// The piece from vertex a to b with bulge k = tan(theta / 4) (theta the included angle, counter-clockwise for
+// k > 0) is built from the chord and the bulge alone, never from the centre, which lies (1 - k^2) / (4 k)
+// chords away: for a small bulge its round-off would swamp the arc. With m the chord's midpoint, h half its
+// length and n = perp(b - a) its left normal (|n| = 2 h):
+//  - an arc of at most 90 degrees is one rational quadratic whose middle control point is the end tangents'
+//    intersection, h tan(theta / 2) to the right of m: m - n k / (1 - k^2) (tan(theta / 2) = 2 k / (1 - k^2)),
+//    with weight cos(theta / 2) = (1 - k^2) / (1 + k^2);
+//  - a larger arc is halved at its middle point m - n k / 2 (its sagitta is h k), each half with bulge
+//    tan(theta / 8) = k / (1 + sqrt(1 + k^2));
+//  - a bulge of at most the double round-off eps is a line: its sagitta h |k| <= eps max(|a|, |b|) is below
+//    the round-off of the vertices themselves (max(|a|, |b|) >= h);
+//  - a bulge above kLargestBulge is refused: the arc's ends are 2 / (|k| + 1 / |k|) of its diameter apart,
+//    below the join tolerance, and cannot be told from a whole circle.
+
+/// tan(pi / 8) = sqrt(2) - 1 (a quarter turn), with room for the rounding of the halving.
+constexpr double kQuarterTurnBulge = 0.41421356237310;
+constexpr double kLargestBulge = 2 / kDxfJoinTolerance;
+
+void append_bulge_pieces(const V& a, const V& b, double bulge, std::vector<Segment>& out) {
+  if (std::abs(bulge) <= std::numeric_limits<double>::epsilon()) {
+    out.push_back({{a, b}, {}});
+    return;
+  }
+  const V m = (a + b) / 2, n = perp(V(b - a));
+  if (std::abs(bulge) > kQuarterTurnBulge) {
+    const V middle = m - n * (bulge / 2);
+    const double half = bulge / (1 + std::hypot(1.0, bulge));
+    append_bulge_pieces(a, middle, half, out);
+    append_bulge_pieces(middle, b, half, out);
+    return;
+  }
+  const double k2 = bulge * bulge;
+  out.push_back({{a, m - n * (bulge / (1 - k2)), b}, {1.0, (1 - k2) / (1 + k2), 1.0}});
+}
+
+/// Distance from p to the circle through a and c that bulge k (!= 0) makes, in the chord's frame (origin its
+/// middle, y its left normal, h half its length: centre (0, yc), signed radius r), without forming the
+/// centre: (|p - C|^2 - r^2) / (|p - C| + |r|), where yc^2 - r^2 = -h^2 exactly.
+double off_bulge_circle(const V& a, const V& c, double k, const V& p) {
+  const double h = (c - a).norm() / 2, yc = h * (1 - k * k) / (2 * k), r = h * (1 + k * k) / (2 * k);
+  const V along = (c - a) / (2 * h), left = perp(along), q = p - (a + c) / 2;
+  const double x = q.dot(along), y = q.dot(left);
+  return std::abs((x - h) * (x + h) + y * y - 2 * y * yc) / (std::hypot(x, y - yc) + std::abs(r));
+}
+
+/// Round-off of points: 16 eps of their largest coordinate.
+double round_off(std::initializer_list<V> points) {
+  double m = 0;
+  for (const V& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+  return 16 * std::numeric_limits<double>::epsilon() * m;
+}
+
+// Consecutive bulge arcs of one circle are one arc, one piece of the native parameter: along arcs of
+// different lengths on one circle its speed would jump at every vertex, as along a straight run of lines
+// (docs/scene_format.md, "Straight runs"). Arcs with bulges k and k' are one arc when they turn the same way,
+// together less than a whole turn, and their common vertex lies within round-off of the circle of the whole
+// arc, whose bulge is tan(theta / 4) for the sum of their angles: (k + k') / (1 - k k') (tangent addition).
+
+/// The bulge of an arc of bulge `whole` followed by one of bulge `next` taken as one, or 0 when they turn
+/// different ways, reach a whole turn, or exceed kLargestBulge together.
+double joined_bulge(double whole, double next) {
+  if (next == 0 || !std::isfinite(next) || (next > 0) != (whole > 0) || !(whole * next < 1)) return 0;
+  const double joined = (whole + next) / (1 - whole * next);
+  return std::abs(joined) <= kLargestBulge ? joined : 0;
+}
+
+/// Whether the vertices p[i + 1] .. p[j] lie on the circle of the arc p[i] -> p[j + 1] with bulge `whole`:
+/// within round-off and kOneArcTolerance of its chord (the tangent additions that give `whole` round at each
+/// arc: over a run of a thousand, its circle moves by some 1e-14 of its size).
+constexpr double kOneArcTolerance = 1e-12;
+bool on_arc_circle(const V& a, const V& c, double whole, const V& m) {
+  return off_bulge_circle(a, c, whole, m) <= round_off({a, m, c}) + kOneArcTolerance * (c - a).norm();
+}
+bool inner_vertices_on_arc(const std::vector<V>& p, std::size_t i, std::size_t j, double whole) {
+  for (std::size_t m = i + 1; m <= j; ++m)
+    if (!on_arc_circle(p[i], p[j + 1], whole, p[m])) return false;
+  return true;
 }
 
 class Converter {
@@ -69,18 +155,22 @@ class Converter {
 
   bool mirrored(const RawEntity& e) const { return e.extrusion[2] < 0; }
 
+  /// The extrusion direction must be +Z or -Z: its angle to the Z axis at most kExtrusionTolerance radians
+  /// (round-off of a written unit normal, 0.99999999999999989 for 1), which the arbitrary axis algorithm
+  /// makes exactly (0, 0, +-1) after normalising it; the sign is then that of its z (mirrored()).
   void check_extrusion(const RawEntity& e) const {
     const auto& n = e.extrusion;
-    if (!(n[0] == 0 && n[1] == 0 && std::abs(n[2]) == 1))
-      fail(e, "has extrusion direction (" + number(n[0]) + ", " + number(n[1]) + ", " + number(n[2]) +
-                  "): only drawings in the XY plane, extrusion (0, 0, 1) or (0, 0, -1), are read");
+    if (!(n[2] != 0 && std::hypot(n[0], n[1]) <= kExtrusionTolerance * std::abs(n[2])))
+      fail(e, "has extrusion direction (" + exact_number(n[0]) + ", " + exact_number(n[1]) + ", " + exact_number(n[2]) +
+                  "): only drawings in the XY plane are read, extrusion (0, 0, 1) or (0, 0, -1) within " +
+                  number(kExtrusionTolerance) + " radians");
   }
 
   /// OCS to WCS for extrusion (0, 0, -1): the arbitrary axis algorithm gives Ax = (-1, 0, 0), Ay = (0, 1, 0).
   V ocs(const RawEntity& e, double x, double y) const { return mirrored(e) ? V(-x, y) : V(x, y); }
 
   void line(const RawEntity& e, Piece& piece) const {
-    if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + number(e.v[2]) + " and " + number(e.v[5]) + ")");
+    if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + exact_number(e.v[2]) + " and " + exact_number(e.v[5]) + ")");
     const V a(e.v[0], e.v[1]), b(e.v[3], e.v[4]);
     if (a == b) fail(e, "has zero length");
     piece.segments.push_back({{a, b}, {}});
@@ -88,7 +178,7 @@ class Converter {
 
   void arc(const RawEntity& e, Piece& piece) const {
     const double r = e.v[3];
-    if (!(r > 0)) fail(e, "has radius " + number(r) + "; it must be positive");
+    if (!(r > 0)) fail(e, "has radius " + exact_number(r) + "; it must be positive");
     double sweep = 2 * M_PI, t0 = 0;
     if (e.type == "ARC") {
       // DXF arcs run counter-clockwise from the start to the end angle; equal angles make a full circle.
@@ -103,9 +193,9 @@ class Converter {
   void ellipse(const RawEntity& e, Piece& piece) const {
     const V c(e.v[0], e.v[1]), M(e.v[3], e.v[4]);
     const double ratio = e.v[6];
-    if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + number(e.v[5]) + ")");
+    if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + exact_number(e.v[5]) + ")");
     if (!(M.norm() > 0)) fail(e, "has a zero major axis");
-    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + number(ratio) + "; it must be in (0, 1]");
+    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + exact_number(ratio) + "; it must be in (0, 1]");
     // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1).
     const V m = mirrored(e) ? V(ratio * M.y(), -ratio * M.x()) : V(-ratio * M.y(), ratio * M.x());
     const double t0 = std::fmod(e.v[7], 2 * M_PI);
@@ -114,18 +204,15 @@ class Converter {
     piece.closed = full_turn(sweep);
   }
 
-  /// Bulge b from a to b_: arc of included angle 4 atan(b) (counter-clockwise for b > 0), centre on the chord's
-  /// perpendicular bisector at (1 - b^2) / (4 b) chord lengths to its left.
-  std::vector<Segment> bulge_arc(const V& a, const V& b_, double bulge) const {
-    const double angle = 4 * std::atan(bulge);
-    const V center = (a + b_) / 2 + perp(V(b_ - a)) * ((1 - bulge * bulge) / (4 * bulge));
-    const double r = (a - center).norm(), t0 = std::atan2(a.y() - center.y(), a.x() - center.x());
-    if (!std::isfinite(r) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
-      throw std::range_error("bulge " + number(bulge) + " gives no finite arc");
-    std::vector<Segment> segs = affine_arc(t0, t0 + angle, center, V(r, 0), V(0, r));
-    segs.front().points.front() = a;  // the vertices are the data: keep them exact
-    segs.back().points.back() = b_;
-    return segs;
+  /// The piece from vertex a to vertex b with bulge `bulge` (append_bulge_pieces), or the error naming the vertex.
+  void bulge_piece(const RawEntity& e, std::size_t vertex, const V& a, const V& b, double bulge, Piece& piece) const {
+    if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(vertex));
+    if (std::abs(bulge) > kLargestBulge)
+      fail(e, "at vertex " + std::to_string(vertex) + ": bulge " + exact_number(bulge) + " makes an arc whose ends are " +
+                  number(2 / (std::abs(bulge) + 1 / std::abs(bulge))) + " of its diameter apart, below the join tolerance (" +
+                  number(kDxfJoinTolerance) + "): it cannot be told from a whole circle; a bulge is at most " +
+                  number(kLargestBulge) + " (draw a whole circle as a CIRCLE)");
+    append_bulge_pieces(a, b, bulge, piece.segments);
   }
 
   void polyline(const RawEntity& e, Piece& piece) const {
@@ -145,24 +232,31 @@ class Converter {
     if (closed && vs.size() > 1 && vs.front().x == vs.back().x && vs.front().y == vs.back().y) vs.pop_back();
     const std::size_t n = vs.size(), pieces = closed ? n : n - 1;
     if (n < 2) fail(e, "has fewer than two distinct vertices");
-    for (std::size_t i = 0; i < pieces; ++i) {
-      const Vertex& v = vs[i];
-      const Vertex& w = vs[(i + 1) % n];
-      const V a = three_d ? V(v.x, v.y) : ocs(e, v.x, v.y), b = three_d ? V(w.x, w.y) : ocs(e, w.x, w.y);
+    std::vector<V> p;  // world points, the first again at the end of a closed polyline
+    std::vector<double> k;  // world bulges of the pieces
+    for (std::size_t i = 0; i <= pieces; ++i) {
+      const Vertex& v = vs[i % n];
+      p.push_back(three_d ? V(v.x, v.y) : ocs(e, v.x, v.y));
       // Mirroring the OCS x axis reverses the sense of rotation, hence the bulge's sign.
-      const double bulge = three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge);
-      if (!std::isfinite(bulge)) fail(e, "has a bulge that is not finite at vertex " + std::to_string(i));
-      if (bulge == 0) {
-        piece.segments.push_back({{a, b}, {}});
-      } else {
-        std::vector<Segment> arc;
-        try {
-          arc = bulge_arc(a, b, bulge);
-        } catch (const std::range_error& ex) {
-          fail(e, std::string("at vertex ") + std::to_string(i) + ": " + ex.what());
+      if (i < pieces) k.push_back(three_d ? 0.0 : (mirrored(e) ? -v.bulge : v.bulge));
+    }
+    for (std::size_t i = 0; i < pieces;) {
+      // the longest run of arcs from piece i that are one arc (the start of a closed polyline stays a vertex)
+      std::size_t j = i;
+      double whole = k[i];
+      if (k[i] != 0 && std::abs(k[i]) <= kLargestBulge)
+        for (std::size_t next = i + 1; next < pieces; ++next) {
+          const double joined = joined_bulge(whole, k[next]);
+          if (joined == 0 || !on_arc_circle(p[i], p[next + 1], joined, p[next])) break;
+          j = next;
+          whole = joined;
         }
-        for (Segment& s : arc) piece.segments.push_back(std::move(s));
+      if (j > i && !inner_vertices_on_arc(p, i, j, whole)) {  // drifted off one circle: the arcs as drawn
+        for (std::size_t m = i; m <= j; ++m) bulge_piece(e, m, p[m], p[m + 1], k[m], piece);
+      } else {
+        bulge_piece(e, i, p[i], p[j + 1], whole, piece);
       }
+      i = j + 1;  // each vertex is looked at once or twice: linear in the vertices
     }
     piece.closed = closed;
   }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,12 +22,17 @@ using Segment = BezierSegment<double>;
 
 /// A number as messages write it (10 significant digits), a point as "(x, y)".
 std::string number(double x);
+/// A value a message compares with a bound: the shortest text that reads back to it exactly, so that the
+/// message never shows a value that contradicts what it says (0.99999999999999989, not 1).
+std::string exact_number(double x);
 std::string point_text(const V& p);
 std::string upper(std::string s);
 std::string trim(const std::string& s);
-/// A whole (trimmed) integer / finite real, as DXF group values are checked.
-bool parse_long(const std::string& text, long& out);
-bool parse_real(const std::string& text);
+/// A group value (trimmed) as a number: the one reading of DXF numbers, on which rollkin's checks and
+/// libdxflib's conversion agree (dxf.cpp). nullopt, with `problem` saying why ("is not ...", what libdxflib
+/// would read instead), for any other text.
+std::optional<double> read_real(const std::string& text, std::string& problem);
+std::optional<int> read_int(const std::string& text, std::string& problem);
 /// Group codes whose values are real numbers or integers (DXF reference, "Group code value types").
 bool real_code(unsigned c);
 bool int_code(unsigned c);

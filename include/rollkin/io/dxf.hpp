@@ -13,10 +13,11 @@
 //   LWPOLYLINE, POLYLINE  vertices with bulges: bulge b from vertex i to i + 1 is an arc of included angle
 //                         4 atan(b) (counter-clockwise for b > 0), b = 0 a line; closed flag (70 bit 1) adds
 //                         the closing piece; repeated vertices are skipped. Curve- and spline-fit POLYLINEs and
-//                         meshes are refused.
+//                         meshes are refused. Arcs are built from the chord and the bulge alone, exact for
+//                         every bulge (src/io/dxf_convert.cpp); |b| <= eps is a line, |b| > 2e9 an error.
 //   SPLINE                the control-point form as an exact NURBS (profile/nurbs.hpp): degree (71), knots
 //                         (40), control points (10/20/30) and weights (41). Fit-point-only splines are an error.
-// Extrusion (210/220/230): (0, 0, 1) or (0, 0, -1). The latter mirrors the OCS x axis for ARC, CIRCLE and the
+// Extrusion (210/220/230): (0, 0, 1) or (0, 0, -1), within 1e-12 radians. The latter mirrors the OCS x axis for ARC, CIRCLE and the
 // polylines (arbitrary axis algorithm) and makes ELLIPSE run clockwise; any other direction is an error.
 //
 // Chaining: the selected entities, in file order, are joined end to end into one contour, starting in the
@@ -36,7 +37,9 @@
 //
 // Errors (InputError: file, location "entity TYPE HANDLE" or "line N", message): unsupported entities on the
 // selected layer (TEXT, MTEXT, HATCH, INSERT, DIMENSION, POINT, 3DFACE, ... including types libdxflib does
-// not know, found by the scan below), an empty selection, malformed numbers or counts, degenerate geometry.
+// not know, found by the scan below), an empty selection, malformed numbers or counts, degenerate geometry,
+// two entities with one handle, a file that ends inside an entity. Numbers are plain decimals read once by
+// std::from_chars, the texts on which libdxflib's own conversion agrees (docs/scene_format.md, "Numbers").
 // How skipped entities are found: libdxflib calls processCodeValuePair for every group before it
 // interprets it; the reader's adapter records from it, for every entity of the ENTITIES section, its type
 // (group 0), handle (5) and layer (8) and the group counts it needs to check libdxflib's arrays (knots,

@@ -1,7 +1,10 @@
 // Checks shared by the contour readers (see contour_reader.hpp).
 #include "contour_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 
 namespace rollkin::io {
 
@@ -109,6 +112,58 @@ double signed_area(const std::vector<Vec2<double>>& pts) {
   double a = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) a += cross2<double>(pts[i], pts[(i + 1) % pts.size()]);
   return a / 2;
+}
+
+namespace {
+
+using V2 = Vec2<double>;
+
+bool line_piece(const BezierSegment<double>& s) { return s.degree() == 1 && !s.rational(); }
+
+/// Round-off of points: 16 eps of their largest coordinate.
+double round_off(std::initializer_list<V2> points) {
+  double m = 0;
+  for (const V2& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+  return 16 * std::numeric_limits<double>::epsilon() * m;
+}
+
+/// Distance from p to the line through a and c.
+double off_line(const V2& a, const V2& c, const V2& p) { return std::abs(cross2(V2(c - a), V2(p - a))) / (c - a).norm(); }
+
+/// Whether b -> c continues a -> b straight on: b within round-off of the line a c, c ahead of b.
+bool continues_straight(const V2& a, const V2& b, const V2& c) {
+  return (b - a).dot(c - b) > 0 && off_line(a, c, b) <= round_off({a, b, c});
+}
+
+}  // namespace
+
+std::vector<std::size_t> join_straight_runs(std::vector<BezierSegment<double>>& segments) {
+  std::vector<BezierSegment<double>> joined;
+  std::vector<std::size_t> first;
+  const std::size_t n = segments.size();
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i;  // the run is pieces i .. j
+    if (line_piece(segments[i]))
+      while (j + 1 < n && line_piece(segments[j + 1]) &&
+             continues_straight(segments[j].points[0], segments[j].points[1], segments[j + 1].points[1]))
+        ++j;
+    // Each joint was checked against its neighbours; the run's joints must also lie on its chord (no drift).
+    const V2 a = segments[i].points.front(), c = segments[j].points.back();
+    bool straight = true;
+    for (std::size_t k = i + 1; k <= j && straight; ++k) straight = off_line(a, c, segments[k].points[0]) <= round_off({a, c});
+    if (j > i && straight) {
+      joined.push_back({{a, c}, {}});
+      first.push_back(i);
+    } else {  // a drift off the chord: the pieces as drawn
+      for (std::size_t k = i; k <= j; ++k) {
+        joined.push_back(segments[k]);
+        first.push_back(k);
+      }
+    }
+    i = j + 1;  // each piece is looked at once or twice: linear in the pieces
+  }
+  segments = std::move(joined);
+  return first;
 }
 
 std::vector<std::string> describe_joints(const BezierPath<double>& path, const JointDescriber& describe,

@@ -99,6 +99,14 @@ ContourReader find_contour_reader(const std::string& type);
 /// The known types, in the order of the registry (for the "unknown contour type" message).
 std::vector<std::string> contour_types();
 
+/// Joins consecutive line pieces (polynomial, degree 1) that continue one straight line, each joint within
+/// round-off of the line through the run's ends and ahead of the one before, into one line piece from the
+/// run's first point to its last (docs/scene_format.md, "Straight runs"). A straight run drawn with many
+/// vertices of different spacing is one line: its joints, where the path parameter's speed would jump, are
+/// gone. The start of a closed path stays a joint. Returns, for each piece of the result, the index of the
+/// input piece it starts with (its joint in the file's terms).
+std::vector<std::size_t> join_straight_runs(std::vector<BezierSegment<double>>& segments);
+
 /// The control points of end-to-end segments, each joint once (for the orientation by signed_area).
 std::vector<Vec2<double>> control_polygon(const std::vector<BezierSegment<double>>& segments);
 

@@ -55,6 +55,7 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
           ? "the scene has no units.length: numbers as they are"
           : "converted " + dxf.unit + " -> " + unit_label(ctx.length_unit()) + " (x " + fmt(unit) + ")";
   ctx.note(dxf.description + "; " + conversion + ", then scale " + fmt(scale) + ": coordinates x " + fmt(factor));
+  const std::vector<std::size_t> first = join_straight_runs(dxf.segments);
   std::optional<BezierPath<double>> bezier;
   try {
     bezier.emplace(dxf.segments, dxf.closed);
@@ -64,8 +65,8 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
   const bool reversed = dxf.closed ? ctx.material(c, path, signed_area(control_polygon(dxf.segments)) > 0, "inside")
                                    : ctx.material(c, path, std::nullopt, "left");
   std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
-    const Vec2<double>& p = joint_points[piece];
-    return "entity " + dxf.joint_entities[piece] + " at (" + fmt(p.x()) + ", " + fmt(p.y()) + ") " + drawing_unit + " in " + file;
+    const Vec2<double>& p = joint_points[first[piece]];
+    return "entity " + dxf.joint_entities[first[piece]] + " at (" + fmt(p.x()) + ", " + fmt(p.y()) + ") " + drawing_unit + " in " + file;
   }, "dxf " + what, ctx);
   return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }

@@ -33,9 +33,11 @@ ContourShape read_svg_contour(const json& c, const std::string& path, const Cont
   if (ctx.length_unit() != LengthUnit::Unitless) opt.metres_per_scene_unit = metres_per(ctx.length_unit());
   std::optional<BezierPath<double>> bezier;
   SvgShape shape;
+  std::vector<std::size_t> first;  // per piece of the path, its first segment of the shape (origins)
   try {
     shape = read_svg_shape(svg, id, opt);
     ctx.note(shape.conversion);
+    first = join_straight_runs(shape.segments);
     bezier.emplace(svg_bezier_path(shape));
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
@@ -44,7 +46,8 @@ ContourShape read_svg_contour(const json& c, const std::string& path, const Cont
                                      : ctx.material(c, path, std::nullopt, "left");
   const std::size_t n = shape.origins.size();
   std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
-    return "where " + shape.origins[(piece + n - 1) % n] + " meets " + shape.origins[piece] + " (" + shape.location + " of " + svg + ")";
+    const std::size_t k = first[piece];
+    return "where " + shape.origins[(k + n - 1) % n] + " meets " + shape.origins[k] + " (" + shape.location + " of " + svg + ")";
   }, "svg " + shape.location, ctx);
   return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }

@@ -41,6 +41,8 @@ Files and what each exercises:
                     quadratic SPLINE of PARABOLA scaled by 1000; DISK_MM a circle of radius 1000 mm about the
                     origin made of two bulge-1 arcs (closed LWPOLYLINE); TRACK_MM a LINE from (-10000, 0) to
                     (10000, 0) mm.
+  straight_mm.dxf   $INSUNITS 4. RUN: a straight LWPOLYLINE from (-5000, 0) to (5000, 0) mm through 2001 collinear
+                    vertices spaced 2.5 and 7.5 mm in turn (tests/test_io_cad_scenes.cpp: a disk rolls along it).
 """
 import math
 import os
@@ -261,6 +263,17 @@ def scenes_mm():
     answer("scenes_mm", "TABLE_MM", [table], [("closed", 0), ("corner", "3000 0")])
 
 
+def straight_mm():
+    doc = new_doc("R2010", 4)
+    msp = doc.modelspace()
+    xs = [-5000.0]
+    while xs[-1] < 5000:
+        xs.append(xs[-1] + (2.5 if len(xs) % 2 else 7.5))
+    run = msp.add_lwpolyline([(x, 0) for x in xs], dxfattribs={"layer": "RUN"})
+    save(doc, "straight_mm")
+    answer("straight_mm", "RUN", [run], [("closed", 0), ("vertices", len(xs)), ("middle_vertex", xs.index(0.0))], False)
+
+
 if __name__ == "__main__":
     chain_mm()
     polyline_in()
@@ -270,3 +283,4 @@ if __name__ == "__main__":
     errors()
     units_miles()
     scenes_mm()
+    straight_mm()

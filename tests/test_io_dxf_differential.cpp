@@ -1,0 +1,155 @@
+// The DXF reader (io/dxf.hpp) against ezdxf on random valid drawings: tests/data/dxf/ezdxf_random.py writes
+// seeded drawings with python3-ezdxf (lines and arcs either way, partial ellipses, LWPOLYLINEs and 2D
+// POLYLINEs with bulges 0 and +-1e-18 .. 1e3, rational splines with random weights and knots, extrusion +Z
+// and -Z, 1 to 4 chains on their own layers, some a closed CIRCLE, ELLIPSE or LWPOLYLINE alone, scales 1e-2
+// .. 1e4) and prints ezdxf's own world-coordinate points on each entity. Every chain read by rollkin must
+//   - consist of the same entities in the same order,
+//   - start where ezdxf's first entity starts, within 1e-12 of the chain's size,
+//   - pass within 1e-12 of the chain's size of every ezdxf point (to the segments of the entity the point
+//     belongs to),
+//   - have the length of ezdxf's points joined up, to 1e-2 (that polygon's chord error is below 1e-3): a
+//     gross check that no piece is drawn twice and no arc taken the other way round.
+// Cases: ROLLKIN_DXF_CASES (default 300) drawings from seed ROLLKIN_DXF_SEED (default 1); the longer run is
+// described in docs/reliability.md.
+#define BOOST_TEST_MODULE io_dxf_differential
+#include <boost/test/unit_test.hpp>
+
+#include "bezier_distance.hpp"
+#include "test_support.hpp"
+
+#include "rollkin/io/dxf.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using rollkin::BezierPath;
+using rollkin::DxfContour;
+using rollkin::DxfSelection;
+using V = rollkin::Vec2<double>;
+
+namespace {
+
+const std::string kScript = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/dxf/ezdxf_random.py";
+
+struct RefEntity {
+  std::string label;
+  std::vector<V> points;
+};
+struct RefChain {
+  std::string file, layer;
+  std::vector<RefEntity> entities;
+};
+
+int env_or(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::atoi(v) : fallback;
+}
+
+/// Runs ezdxf_random.py and parses its blocks (see the script's docstring).
+std::vector<RefChain> ezdxf_chains(const std::string& dir, int seed, int count) {
+  const std::string command = "/usr/bin/python3 " + kScript + " " + dir + " " + std::to_string(seed) + " " + std::to_string(count) + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  BOOST_REQUIRE(pipe);
+  std::string out;
+  char buf[65536];
+  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  const int status = pclose(pipe);
+  BOOST_REQUIRE_MESSAGE(status == 0, command + " failed (python3-ezdxf and python3-mpmath installed?): " + out.substr(0, 2000));
+  std::vector<RefChain> chains;
+  std::istringstream in(out);
+  std::string line, file;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string key;
+    s >> key;
+    if (key == "case") {
+      s >> file;
+    } else if (key == "layer") {
+      chains.push_back({file, "", {}});
+      s >> chains.back().layer;
+    } else if (key == "entity") {
+      std::string type, handle;
+      s >> type >> handle;
+      chains.back().entities.push_back({type + " " + handle, {}});
+    } else if (key == "p") {
+      double x, y;
+      s >> x >> y;
+      chains.back().entities.back().points.emplace_back(x, y);
+    }
+  }
+  return chains;
+}
+
+/// The entity a segment belongs to: joint_entities names the one at its start, "A / B" at a join of two.
+std::string owner(const DxfContour& c, std::size_t segment) {
+  const std::string& j = c.joint_entities[segment];
+  const std::size_t slash = j.find(" / ");
+  return slash == std::string::npos ? j : j.substr(slash + 3);
+}
+
+struct Worst {
+  double distance = 0, length = 0;
+  std::string where;
+};
+
+/// Compares one chain; returns its largest relative distance and length difference.
+void compare(const RefChain& ref, Worst& worst) {
+  BOOST_TEST_CONTEXT(ref.file << " layer " << ref.layer) {
+    const DxfContour c = rollkin::read_dxf_contour(ref.file, DxfSelection{ref.layer, ""});
+    BOOST_REQUIRE_EQUAL(c.entities.size(), ref.entities.size());
+    V lo = ref.entities[0].points[0], hi = lo;
+    double polygon = 0;
+    for (const RefEntity& e : ref.entities)
+      for (std::size_t i = 0; i < e.points.size(); ++i) {
+        lo = lo.cwiseMin(e.points[i]), hi = hi.cwiseMax(e.points[i]);
+        if (i > 0) polygon += (e.points[i] - e.points[i - 1]).norm();
+      }
+    const double size = (hi - lo).norm();
+    const BezierPath<double> path(c.segments, c.closed);
+    BOOST_TEST((c.segments.front().points.front() - ref.entities[0].points[0]).norm() <= 1e-12 * size);
+    for (std::size_t k = 0; k < ref.entities.size(); ++k) {
+      const RefEntity& e = ref.entities[k];
+      BOOST_TEST(c.entities[k] == e.label);
+      std::vector<std::size_t> mine;
+      for (std::size_t i = 0; i < c.segments.size(); ++i)
+        if (owner(c, i) == e.label) mine.push_back(i);
+      BOOST_REQUIRE(!mine.empty());
+      double entity_worst = 0;
+      for (const V& q : e.points) {
+        double d = 1e300;
+        for (std::size_t i : mine) d = std::min(d, rollkin::testing::distance_to_piece(path, i, q));
+        entity_worst = std::max(entity_worst, d / size);
+      }
+      BOOST_TEST(entity_worst < 1e-12, e.label << ": ezdxf's points up to " << entity_worst << " x size off the contour");
+      if (entity_worst > worst.distance) worst.distance = entity_worst, worst.where = ref.file + " " + e.label;
+    }
+    const double length = std::abs(path.total_length() - polygon) / path.total_length();
+    BOOST_TEST(length < 1e-2, "length " << path.total_length() << ", ezdxf's polygon " << polygon);
+    worst.length = std::max(worst.length, length);
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(random_ezdxf_drawings_read_as_ezdxf_draws_them) {
+  const int seed = env_or("ROLLKIN_DXF_SEED", 1), count = env_or("ROLLKIN_DXF_CASES", 300);
+  const std::filesystem::path dir = rollkin::testing::scratch_dir("io_dxf_differential") / ("seed_" + std::to_string(seed));
+  std::filesystem::remove_all(dir);
+  const std::vector<RefChain> chains = ezdxf_chains(dir.string(), seed, count);
+  std::map<std::string, int> types;
+  Worst worst;
+  for (const RefChain& chain : chains) {
+    compare(chain, worst);
+    for (const RefEntity& e : chain.entities) ++types[e.label.substr(0, e.label.find(' '))];
+  }
+  std::printf("%d drawings (seed %d), %zu chains:", count, seed, chains.size());
+  for (const auto& [type, n] : types) std::printf(" %d %s", n, type.c_str());
+  std::printf("\nlargest distance of an ezdxf point / chain size %.2e (%s); largest length difference to ezdxf's polygon %.2e\n",
+              worst.distance, worst.where.c_str(), worst.length);
+  BOOST_TEST(chains.size() >= static_cast<std::size_t>(count));
+}
