@@ -4,9 +4,9 @@
 #include "rollkin/reference.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/input_file.hpp"
 #include "rollkin/io/units.hpp"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -84,8 +84,7 @@ int ReferenceTable::column(const std::string& name) const {
 }
 
 ReferenceTable read_reference_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read reference file '" + path + "'");
+  std::istringstream in(io::read_input_file(path, "the reference file"));
   auto split = [](const std::string& line) {
     std::vector<std::string> f;
     std::string cur;

@@ -5,7 +5,9 @@
 
 #include "rollkin/io/svg_path.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -253,4 +255,70 @@ BOOST_AUTO_TEST_CASE(a_chord_tiny_against_the_radii_keeps_the_ellipse) {
       for (const V& p : seg.points) BOOST_TEST((std::isfinite(p.x()) && std::isfinite(p.y())));
   // The small arc is as degenerate as the straight line over the same chord, and read like it.
   BOOST_TEST(parse("M0 0 A300 45 0 0 1 0 1.1e-299").size() == parse("M0 0 L0 1.1e-299").size());
+}
+
+// Pieces shorter than the tolerance are merged into their neighbours, not removed: the path still ends where
+// it ends. 10^5 steps "l 0 1e-6" after a 500-long line are each below the tolerance (joint tolerance 1.5e-8
+// times the extent 500: 7.5e-6) but carry the path 0.1 up; they used to be folded one by one into the line,
+// which ended at (400, 0.1) tilted, 500.00001 long and without its corner. Closed form: a line of 500 and
+// a line of 0.1 at right angles, 500.1 long.
+BOOST_AUTO_TEST_CASE(pieces_shorter_than_the_tolerance_are_merged_and_the_path_ends_where_it_ends) {
+  std::string d = "M -100 0 L 400 0";
+  for (int i = 0; i < 100000; ++i) d += " l 0 1e-6";
+  const auto subs = parse(d);
+  BOOST_REQUIRE(subs.size() == 1u);
+  const BezierPath<double> path(subs[0].segments, false);
+  const V end = path.jet(path.domain().hi, 0).p;
+  BOOST_TEST((end - V(400, 0.1)).norm() < 1e-11);  // 10^5 additions of 1e-6: round-off about 1e-12
+  BOOST_TEST(std::abs(path.total_length() - 500.1) < 1e-12 * 500.1);
+  BOOST_TEST(subs[0].segments.size() == 2u);  // the steps, collinear, are one line
+  BOOST_TEST(((subs[0].segments.front().points.back() - V(400, 0)).norm() < 1e-5));  // the line keeps its end
+  BOOST_REQUIRE(path.corners().size() == 1u);  // the right angle at (400, 0)
+  BOOST_TEST(std::abs(path.corners()[0].turn - M_PI / 2) < 1e-4);
+  BOOST_TEST(contains(subs[0].origins.back(), "through command 100002 (l)"));
+
+  // A curved run of short steps keeps its shape: 10^4 steps of 6.3e-6 around a circle of radius 0.01 after a
+  // 1000-long line (tolerance 1.5e-5). Every vertex of the merged pieces is a vertex of the path (on the circle
+  // to round-off), every vertex of the path lies within twice the tolerance of them, and the length is the
+  // line's plus the circle's, short of it by at most the chords' sagitta (h / 3r of the circle for h <= 2 tol).
+  const int steps = 10000;
+  const double r = 0.01;
+  std::string c = "M -1000 0 L 0 0";
+  V at(0, 0);
+  for (int k = 1; k <= steps; ++k) {
+    const double t = 2 * M_PI * k / steps;
+    const V next(r * std::sin(t), r - r * std::cos(t));
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " l %.17g %.17g", next.x() - at.x(), next.y() - at.y());
+    c += buf;
+    at = next;
+  }
+  const auto circle = parse(c);
+  BOOST_REQUIRE(circle.size() == 1u);
+  const auto& chords = circle[0].segments;
+  BOOST_TEST(chords.size() > 20u);  // not one chord
+  double worst = 0;
+  for (std::size_t i = 1; i < chords.size(); ++i)
+    worst = std::max(worst, std::abs((chords[i].points.front() - V(0, r)).norm() - r));
+  BOOST_TEST(worst < 1e-12);
+  const double tol = rollkin::BezierPathOptions<double>{}.joint_tolerance * std::hypot(1000.0, 2 * r);
+  auto distance_to_chords = [&](const V& q) {
+    double d = INFINITY;
+    for (std::size_t i = 1; i < chords.size(); ++i) {
+      const V a = chords[i].points.front(), b = chords[i].points.back();
+      const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      d = std::min(d, (a + t * (b - a) - q).norm());
+    }
+    return d;
+  };
+  double farthest = 0;
+  for (int k = 1; k <= steps; ++k) {
+    const double t = 2 * M_PI * k / steps;
+    farthest = std::max(farthest, distance_to_chords(V(r * std::sin(t), r - r * std::cos(t))));
+  }
+  BOOST_TEST(farthest <= 2 * tol);
+  const BezierPath<double> loop(chords, false);
+  BOOST_TEST(loop.total_length() <= 1000 + 2 * M_PI * r + 1e-12 * 1000);
+  BOOST_TEST(loop.total_length() >= 1000 + 2 * M_PI * r - 2 * M_PI * r * (2 * tol) / (3 * r) - 1e-12 * 1000);
+  BOOST_TEST(((loop.jet(loop.domain().hi, 0).p - V(0, 0)).norm() < 1e-12));
 }

@@ -7,10 +7,12 @@
 
 #include "rollkin/io/svg_path.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <random>
 #include <sstream>
 
 using rollkin::BezierPath;
@@ -22,6 +24,7 @@ using rollkin::SvgReadOptions;
 using rollkin::SvgShape;
 using rollkin::testing::contains;
 using V = rollkin::Vec2<double>;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -44,9 +47,11 @@ struct RefSegment {
   V at(std::size_t k) const { return V(v[2 * k], v[2 * k + 1]); }
 };
 
+/// svgelements' segments of the element `id` of `file` (under tests/data/svg/ unless absolute).
 std::vector<RefSegment> svgelements_segments(const std::string& file, const std::string& id, const std::string& ppi) {
   const std::string command =
-      python() + " " + kData + "svgelements_points.py " + kData + file + " " + id + " " + ppi + " 2>&1";
+      python() + " " + kData + "svgelements_points.py " + (file.front() == '/' ? file : kData + file) + " " + id + " " + ppi +
+      " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   BOOST_REQUIRE(pipe != nullptr);
   std::string out;
@@ -71,13 +76,8 @@ std::vector<RefSegment> svgelements_segments(const std::string& file, const std:
 /// sample on svgelements' ellipse c + u cos t + v sin t at its eccentric angle t; the pieces must cover the
 /// arc's eccentric sweep exactly, in order.
 /// Millimetre drawings are compared in millimetres (svgelements at 25.4 px per inch), the others in px.
-double worst_difference(const std::string& file, const std::string& id) {
-  const bool mm = file.find("_mm") != std::string::npos;
-  SvgReadOptions o;
-  o.flip_y = false;
-  o.metres_per_scene_unit = mm ? 1e-3 : kMetresPerPx;
-  const SvgShape mine = read_svg_shape(kData + file, id, o);
-  const std::vector<RefSegment> ref = svgelements_segments(file, id, mm ? "25.4" : "96");
+double worst_difference(const SvgShape& mine, const std::vector<RefSegment>& ref, const std::string& file,
+                        const std::string& id) {
   double extent = 0;
   for (const auto& s : mine.segments)
     for (const auto& p : s.points) extent = std::max(extent, p.norm());
@@ -131,6 +131,14 @@ double worst_difference(const std::string& file, const std::string& id) {
   BOOST_TEST(i == mine.segments.size());
   BOOST_TEST(closed == mine.closed);
   return worst;
+}
+
+double worst_difference(const std::string& file, const std::string& id) {
+  const bool mm = file.find("_mm") != std::string::npos;
+  SvgReadOptions o;
+  o.flip_y = false;
+  o.metres_per_scene_unit = mm ? 1e-3 : kMetresPerPx;
+  return worst_difference(read_svg_shape(kData + file, id, o), svgelements_segments(file, id, mm ? "25.4" : "96"), file, id);
 }
 
 // ---- helpers -------------------------------------------------------------------------------------------
@@ -309,6 +317,30 @@ BOOST_AUTO_TEST_CASE(closed_path_with_round_off_duplicate_end_is_a_usable_contou
   BOOST_TEST((near.segments.back().points.back() == V(0, 0)));
 }
 
+// Pieces shorter than the tolerance are merged, not removed: 10^5 steps "l 0 1e-6" after a 500-long line end
+// the path at y = 0.1, as svgelements reads it (its end point and the sum of its segments' lengths).
+BOOST_AUTO_TEST_CASE(short_pieces_end_where_svgelements_ends_them) {
+  std::string d = "M -100 0 L 400 0";
+  for (int i = 0; i < 100000; ++i) d += " l 0 1e-6";
+  const fs::path dir = rollkin::testing::scratch_dir("io_svg_reader");
+  rollkin::testing::write_text(dir / "short_steps.svg", doc("<path id=\"p\" d=\"" + d + "\"/>"));
+  SvgReadOptions o;
+  o.flip_y = false;
+  const BezierPath<double> mine = rollkin::svg_bezier_path(read_svg_shape((dir / "short_steps.svg").string(), "p", o));
+  double steps = 0, line = 0;  // the short steps summed apart from the long line, not lost against its 500
+  V end(0, 0);
+  for (const RefSegment& r : svgelements_segments((dir / "short_steps.svg").string(), "p", "96")) {
+    BOOST_REQUIRE(r.kind == 'L');
+    const double l = (r.at(1) - r.at(0)).norm();
+    (l > 1 ? line : steps) += l;
+    end = r.at(1);
+  }
+  const double length = line + steps;
+  BOOST_TEST(std::abs(end.y() - 0.1) < 1e-11);  // svgelements agrees with the closed form
+  BOOST_TEST((mine.jet(mine.domain().hi, 0).p - end).norm() <= 1e-12 * 500);
+  BOOST_TEST(std::abs(mine.total_length() - length) <= 1e-12 * length);
+}
+
 // ---- compatibility entry point used by the scene reader ---------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(read_svg_path_applies_group_transforms) {
@@ -427,4 +459,140 @@ BOOST_AUTO_TEST_CASE(document_level_errors) {
   SvgReadOptions bad;
   bad.scale = 0;
   BOOST_TEST(contains(error_of(doc("<path id=\"p\" d=\"M 0 0 L 1 1\"/>"), "p", bad), "the scale factor must be positive"));
+}
+
+// ---- (d) random paths and transforms against svgelements ---------------------------------------------------
+
+namespace {
+
+/// A random path: a moveto, then `commands` commands drawn from every command letter, absolute and relative,
+/// with arcs of random radii, rotations and flags; Z at the end or not. The radii are at least 1.2 times the
+/// half chord: radii that F.6.6 scales up (an exact half ellipse) are where svgelements deviates from SVG (see
+/// the test below), and test_io_svg_path.cpp checks rollkin there against the closed form.
+std::string random_path_data(std::mt19937_64& rng, int commands) {
+  std::uniform_real_distribution<double> coord(-100, 100), step(-40, 40), spread(1.2, 3), angle(-180, 180);
+  std::uniform_int_distribution<int> letter(0, 17), flag(0, 1);
+  auto num = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return std::string(buf);
+  };
+  V current(0, 0);
+  auto point = [&](bool rel) {  // the numbers of a coordinate pair and the point they make
+    const V p(rel ? step(rng) : coord(rng), rel ? step(rng) : coord(rng));
+    return std::make_pair(" " + num(p.x()) + " " + num(p.y()), rel ? V(current + p) : p);
+  };
+  auto pairs = [&](bool rel, int count) {  // `count` pairs; the last is the new current point
+    std::string text;
+    V last = current;
+    for (int k = 0; k < count; ++k) {
+      const auto [t, p] = point(rel);
+      text += t;
+      last = p;
+    }
+    current = last;
+    return text;
+  };
+  std::string d = "M" + pairs(false, 1);
+  static const char letters[] = "LlHhVvCcSsQqTtAaLl";
+  char previous = 'M';
+  for (int k = 0; k < commands; ++k) {
+    char c = letters[letter(rng)];
+    // S only after C or S, T only after Q or T: svgelements reflects the previous curve's control point after
+    // any curve, where SVG (9.3.6, 9.3.7) takes the current point.
+    const char up = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (up == 'S' && previous != 'C' && previous != 'S') c = c == 'S' ? 'C' : 'c';
+    if (up == 'T' && previous != 'Q' && previous != 'T') c = c == 'T' ? 'Q' : 'q';
+    previous = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const bool rel = std::islower(static_cast<unsigned char>(c)) != 0;
+    d += std::string(" ") + c;
+    switch (std::toupper(static_cast<unsigned char>(c))) {
+      case 'L': case 'T': d += pairs(rel, 1); break;
+      case 'H': case 'V': {
+        const double v = rel ? step(rng) : coord(rng);
+        d += " " + num(v);
+        double& axis = std::toupper(static_cast<unsigned char>(c)) == 'H' ? current.x() : current.y();
+        axis = rel ? axis + v : v;
+        break;
+      }
+      case 'C': d += pairs(rel, 3); break;
+      case 'S': case 'Q': d += pairs(rel, 2); break;
+      case 'A': {
+        const V from = current;
+        const auto [t, to] = point(rel);
+        const double half_chord = (to - from).norm() / 2;
+        d += " " + num(half_chord * spread(rng)) + " " + num(half_chord * spread(rng)) + " " + num(angle(rng)) + " " +
+             std::to_string(flag(rng)) + " " + std::to_string(flag(rng)) + t;
+        current = to;
+        break;
+      }
+    }
+  }
+  return flag(rng) ? d + " Z" : d;
+}
+
+/// A random transform list: translate, rotate (about a point or not), scale, skewX/Y and matrix, 1 to 3 of them.
+std::string random_transform(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> shift(-50, 50), turn(-180, 180), factor(0.3, 3), skew(-40, 40), unit(-1, 1);
+  std::uniform_int_distribution<int> kind(0, 5), count(1, 3);
+  std::ostringstream t;
+  t.precision(17);
+  for (int k = count(rng); k > 0; --k) {
+    switch (kind(rng)) {
+      case 0: t << "translate(" << shift(rng) << " " << shift(rng) << ") "; break;
+      case 1: t << "rotate(" << turn(rng) << ") "; break;
+      case 2: t << "rotate(" << turn(rng) << " " << shift(rng) << " " << shift(rng) << ") "; break;
+      case 3: t << "scale(" << factor(rng) << " " << -factor(rng) << ") "; break;
+      case 4: t << (unit(rng) > 0 ? "skewX(" : "skewY(") << skew(rng) << ") "; break;
+      case 5: t << "matrix(" << 1 + unit(rng) / 2 << " " << unit(rng) / 4 << " " << unit(rng) / 4 << " " << 1 + unit(rng) / 2
+                << " " << shift(rng) << " " << shift(rng) << ") "; break;
+    }
+  }
+  return t.str();
+}
+
+}  // namespace
+
+// Seeded: the same few hundred paths every run. Each is a random path under a random group transform and its
+// own random transform; rollkin and svgelements read the same file, and every control point (lines, Beziers)
+// and every arc point (on svgelements' ellipse) agrees to 1e-12 of the drawing's size.
+// Where svgelements deviates from SVG: (1) it converts mm and cm with a rounded factor (svgelements_points.py
+// works around it; the drawings here are unitless); (2) radii too small for the chord, scaled up by F.6.6 to
+// an exact half ellipse: svgelements reaches the centre through the square root of a round-off difference
+// (1e-8 of the size off), so such arcs are left out here; (3) its transformed ("reified") arcs under a skew or
+// non-uniform scale with a reflection can run along the wrong part of the ellipse (this seed, path r8: F.6.5
+// worked by hand agrees with rollkin), so svgelements_points.py maps svgelements' untransformed segments by
+// svgelements' own composed matrix instead ("map"); (4) S after a quadratic and T after a cubic reflect that
+// curve's control point, where SVG takes the current point: the paths here put S only after C/S, T after Q/T.
+BOOST_AUTO_TEST_CASE(random_paths_and_transforms_match_svgelements_to_1e_12) {
+  std::mt19937_64 rng(20261125);
+  const int cases = 300;
+  std::string body;
+  std::string ids;
+  for (int k = 0; k < cases; ++k) {
+    const std::string id = "r" + std::to_string(k);
+    body += "<g transform=\"" + random_transform(rng) + "\"><path id=\"" + id + "\" transform=\"" + random_transform(rng) +
+            "\" d=\"" + random_path_data(rng, 1 + k % 12) + "\"/></g>\n";
+    ids += (k ? "," : "") + id;
+  }
+  const fs::path file = rollkin::testing::scratch_dir("io_svg_reader") / "random_paths.svg";
+  rollkin::testing::write_text(file, doc(body));
+  const std::vector<RefSegment> all = svgelements_segments(file.string(), ids, "96 map");
+  std::vector<std::vector<RefSegment>> by_path;
+  for (const RefSegment& r : all) {
+    if (r.kind == 'P') by_path.emplace_back();
+    else by_path.back().push_back(r);
+  }
+  BOOST_REQUIRE(by_path.size() == static_cast<std::size_t>(cases));
+  SvgReadOptions o;
+  o.flip_y = false;
+  double worst = 0;
+  for (int k = 0; k < cases; ++k) {
+    const std::string id = "r" + std::to_string(k);
+    const double d = worst_difference(read_svg_shape(file.string(), id, o), by_path[static_cast<std::size_t>(k)],
+                                      "random_paths.svg", id);
+    BOOST_TEST(d < 1e-12, id << ": " << d);
+    worst = std::max(worst, d);
+  }
+  BOOST_TEST_MESSAGE(cases << " random paths: largest relative difference to svgelements " << worst);
 }

@@ -5,6 +5,7 @@
 #include "dxf_collector.hpp"
 
 #include "rollkin/io/csv.hpp"
+#include "rollkin/io/input_file.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <unistd.h>
@@ -18,7 +19,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <sstream>
@@ -358,11 +358,7 @@ DxfContour parse_dxf_contour(const std::string& dxf, const DxfSelection& selecti
 }
 
 DxfContour read_dxf_contour(const std::string& path, const DxfSelection& selection) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the DXF file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return contour_from(text.str(), path, selection, path);
+  return contour_from(io::read_input_file(path, "the DXF file"), path, selection, path);
 }
 
 }  // namespace rollkin

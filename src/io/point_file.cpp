@@ -1,12 +1,12 @@
 #include "rollkin/io/point_file.hpp"
 
-#include <cerrno>
+#include "rollkin/io/input_file.hpp"
+
 #include <charconv>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 
@@ -93,23 +93,23 @@ class PointParser {
     seen_content_ = true;
     double x = 0, y = 0;
     const bool x_ok = parse_number(fields[0], x);
-    const std::string shown = "\"" + excerpt(trimmed(text)) + "\"";
+    const auto shown = [&] { return "\"" + excerpt(trimmed(text)) + "\""; };  // for messages only
     if (first_content && !x_ok) {  // the header line
       if (!header_names_x_and_y(fields))
-        fail(number, "header " + shown + " does not name the columns x and y; a point file holds the coordinates x y " +
+        fail(number, "header " + shown() + " does not name the columns x and y; a point file holds the coordinates x y " +
                          "of a planar contour, so a header line must name x then y (e.g. \"x,y\" or \"x_mm y_mm\")");
       return;
     }
     const std::string expected = "expected two numbers \"x y\", got ";
     if (const std::string why = decimal_commas(text); !why.empty()) fail(number, why);
     if (!x_ok || (fields.size() > 1 && !parse_number(fields[1], y)))
-      fail(number, expected + shown + " (" + excerpt(x_ok ? fields[1] : fields[0]) + " is not a number)");
-    if (fields.size() == 1) fail(number, expected + "only one number in " + shown);
+      fail(number, expected + shown() + " (" + excerpt(x_ok ? fields[1] : fields[0]) + " is not a number)");
+    if (fields.size() == 1) fail(number, expected + "only one number in " + shown());
     if (fields.size() > 2)
       fail(number, expected + (fields.size() == 3 ? "a third column" : std::to_string(fields.size()) + " columns") +
-                       " in " + shown + "; a point file holds the two coordinates x y of a planar contour: keep " +
+                       " in " + shown() + "; a point file holds the two coordinates x y of a planar contour: keep " +
                        "the x and y columns only (e.g. awk '{print $1, $2}')");
-    if (!std::isfinite(x) || !std::isfinite(y)) fail(number, expected + shown + " (not a finite number)");
+    if (!std::isfinite(x) || !std::isfinite(y)) fail(number, expected + shown() + " (not a finite number)");
     points_.emplace_back(x * scale_, y * scale_);
     lines_.push_back(number);
     last_line_ = number;
@@ -176,19 +176,10 @@ PointSamples parse_text(const std::string& text, const std::string& source, std:
   return parser.finish(min_points);
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", std::string("cannot open the point file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", std::string("cannot read the point file: ") + std::strerror(errno));
-  return text.str();
-}
-
 }  // namespace
 
 PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale) {
-  return parse_text(file_text(path), path, min_points, scale);
+  return parse_text(io::read_input_file(path, "the point file"), path, min_points, scale);
 }
 
 std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t min_points, double scale) {

@@ -8,13 +8,12 @@
 
 #include "rollkin/builder.hpp"
 #include "rollkin/geometry/contact.hpp"
+#include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json_document.hpp"
 
 #include <array>
-#include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -393,13 +392,7 @@ Scene build_scene(const nlohmann::ordered_json& document, const std::string& fil
 Scene parse_scene(const std::string& text, const std::string& file) { return build_scene(parse_json_document(text, file), file); }
 
 nlohmann::ordered_json read_scene_document(const std::string& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError(path, "", "is a directory; expected a scene file (JSON)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the scene file (" + std::string(std::strerror(errno)) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_json_document(text.str(), path);
+  return parse_json_document(read_input_file(path, "the scene file"), path);
 }
 
 Scene load_scene(const std::string& path) { return build_scene(read_scene_document(path), path); }

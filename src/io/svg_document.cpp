@@ -1,5 +1,6 @@
 // SVG documents: one element by id, its transforms, the root viewport and units (see io/svg_path.hpp).
 #include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/input_file.hpp"
 #include "rollkin/io/text_position.hpp"
 
 #include "svg_detail.hpp"
@@ -8,10 +9,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -367,13 +366,15 @@ void check_nothing_ignored(const pugi::xml_node& root, const pugi::xml_node& ele
     if (kind == "svg")
       where.fail("the element is inside a nested <svg> viewport (" + element_location(text, n) +
                  "), which rollkin does not apply; ungroup it in the editor");
-    const std::string who = n == element ? "the element" : "its ancestor " + element_location(text, n);
+    // Built only for a message: element_location counts lines from the start of the text, so building it for
+    // every ancestor would cost depth x file size (quadratic for deeply nested groups).
+    const auto who = [&] { return n == element ? std::string("the element") : "its ancestor " + element_location(text, n); };
     if (const std::string p = css_transform_property(n.attribute("style").value()); !p.empty())
-      where.fail(who + " has a CSS transform (" + p + ") in style=\"" + std::string(n.attribute("style").value()) +
+      where.fail(who() + " has a CSS transform (" + p + ") in style=\"" + std::string(n.attribute("style").value()) +
                  "\", which rollkin does not apply; use the transform attribute instead");
     for (const char* a : {"transform-origin", "transform-box"})
       if (n.attribute(a))
-        where.fail(who + " has " + a + "=\"" + n.attribute(a).value() +
+        where.fail(who() + " has " + a + "=\"" + n.attribute(a).value() +
                    "\", which rollkin does not apply; write the transform about the origin instead");
     if (const std::string id = n.attribute("id").value(); !id.empty()) chain_ids.emplace("#" + id, n);
   }
@@ -610,14 +611,6 @@ std::string conversion_line(const SvgShape& shape, std::size_t transforms, const
   return line.str();
 }
 
-std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", std::string("cannot open the SVG file: ") + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 }  // namespace
 
 SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id, const SvgReadOptions& options,
@@ -640,7 +633,6 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   if (!all_finite(g.segments))
     where.fail("the shape's control points overflow (a coordinate or radius near the largest double); expected "
                "coordinates of a drawing");
-  svg_detail::drop_degenerate_segments(g);  // e.g. a polygon whose last point repeats the first to round-off
 
   std::size_t transforms = 0;
   const Affine m = element_to_root(root, element, text, where, transforms);
@@ -657,6 +649,9 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   if (!all_finite(g.segments))
     where.fail("the transforms, viewBox and scale map the shape beyond the largest double (overflow); expected "
                "the transforms of a drawing");
+  // In the coordinates BezierPath gets (a non-uniform transform changes which pieces are short), e.g. a polygon
+  // whose last point repeats the first to round-off.
+  svg_detail::merge_short_segments(g);
   shape.segments = std::move(g.segments);
   shape.origins = std::move(g.origins);
   shape.closed = g.closed;
@@ -668,7 +663,7 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
 }
 
 SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, const SvgReadOptions& options) {
-  return read_svg_shape_from_text(read_file_text(svg_file), id, options, svg_file);
+  return read_svg_shape_from_text(io::read_input_file(svg_file, "the SVG file"), id, options, svg_file);
 }
 
 BezierPath<double> svg_bezier_path(const SvgShape& shape) {

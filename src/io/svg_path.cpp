@@ -131,7 +131,7 @@ class PathDataParser {
     }
     std::vector<SvgSubpath> out;
     for (auto& s : subpaths_) {
-      svg_detail::drop_degenerate_segments(s);
+      svg_detail::merge_short_segments(s);
       if (!s.segments.empty()) out.push_back(std::move(s));
     }
     return out;
@@ -346,27 +346,103 @@ double control_extent(const std::vector<BezierSegment<double>>& segments) {
   return (hi - lo).norm();
 }
 
-void drop_degenerate_segments(SvgSubpath& sub) {
+namespace {
+
+/// Whether every control point of s lies within tol of its start: a piece BezierPath cannot hold.
+bool shorter_than(const Segment& s, double tol) {
+  for (const P& q : s.points)
+    if ((q - s.points.front()).norm() > tol) return false;
+  return true;
+}
+
+/// "A through B (merged: ...)" for a piece made of the pieces from origin A to origin B.
+std::string merged_origin(const std::string& first, const std::string& last) {
+  return first == last ? first : first + " through " + last + " (merged: each shorter than the tolerance)";
+}
+
+/// Consecutive pieces shorter than the tolerance, collected until together they span more than it.
+struct ShortRun {
+  std::optional<P> start;  // none: no run pending
+  P end = P::Zero();
+  std::string first, last;  // the origins of the run's first and last piece
+
+  void add(const Segment& s, const std::string& origin) {
+    if (!start) {
+      start = s.points.front();
+      first = origin;
+    }
+    end = s.points.back();
+    last = origin;
+  }
+};
+
+/// A line made of runs of short pieces, from `start`, and the directions it may still turn to: every run end
+/// so far lies within tol of the line from start in any direction of [lo, hi] (radians, relative to
+/// `reference`), and farther from start than the previous one, so within tol of the line segment itself.
+struct MergedLine {
+  P start;
+  std::string first;  // origin of its first short piece
+  double reference, lo, hi, reach;
+
+  MergedLine(const P& from, const P& to, std::string origin, double tol)
+      : start(from), first(std::move(origin)), reference(std::atan2((to - from).y(), (to - from).x())),
+        lo(0), hi(0), reach(0) {
+    narrow(to, tol);
+  }
+  /// Whether the line may end at `to` instead (then narrows its directions to keep the earlier ends near it).
+  bool extends_to(const P& to, double tol) {
+    const P d = to - start;
+    const double turn = std::remainder(std::atan2(d.y(), d.x()) - reference, 2 * kPi);
+    if (!(d.norm() > reach) || turn < lo || turn > hi) return false;
+    narrow(to, tol);
+    return true;
+  }
+
+ private:
+  void narrow(const P& to, double tol) {
+    const P d = to - start;
+    const double turn = std::remainder(std::atan2(d.y(), d.x()) - reference, 2 * kPi);
+    const double half = std::asin(std::min(1.0, tol / d.norm()));
+    lo = reach == 0 ? turn - half : std::max(lo, turn - half);
+    hi = reach == 0 ? turn + half : std::min(hi, turn + half);
+    reach = d.norm();
+  }
+};
+
+}  // namespace
+
+void merge_short_segments(SvgSubpath& sub) {
   const double tol = BezierPathOptions<double>{}.joint_tolerance * control_extent(sub.segments);
   if (!std::isfinite(tol)) return;  // an overflowing shape is refused by the caller, with its own message
   std::vector<Segment> kept;
   std::vector<std::string> origins;
-  std::optional<P> pending_start;  // the start of dropped leading pieces, for the first kept segment
+  ShortRun run;
+  std::optional<MergedLine> line;  // the last line made of runs, while it is the last kept piece
   for (std::size_t i = 0; i < sub.segments.size(); ++i) {
     Segment& s = sub.segments[i];
-    bool degenerate = true;
-    for (const P& q : s.points) degenerate = degenerate && (q - s.points.front()).norm() <= tol;
-    if (!degenerate) {
-      if (pending_start) s.points.front() = *pending_start;
-      pending_start.reset();
+    const std::string origin = i < sub.origins.size() ? sub.origins[i] : "";
+    if (!shorter_than(s, tol)) {
+      if (run.start) s.points.front() = *run.start;  // a run too short to stand alone joins the next piece
+      run = {};
+      line.reset();
       kept.push_back(std::move(s));
-      origins.push_back(i < sub.origins.size() ? sub.origins[i] : "");
-    } else if (!kept.empty()) {
-      kept.back().points.back() = s.points.back();
-    } else if (!pending_start) {
-      pending_start = s.points.front();
+      origins.push_back(origin);
+      continue;
     }
+    run.add(s, origin);
+    if (!((run.end - *run.start).norm() > tol)) continue;
+    // Long enough together: the run's chord is a piece, or extends the line the previous runs made.
+    if (line && line->extends_to(run.end, tol)) {
+      kept.back().points.back() = run.end;
+      origins.back() = merged_origin(line->first, run.last);
+    } else {
+      line.emplace(*run.start, run.end, run.first, tol);
+      kept.push_back(Segment{{*run.start, run.end}, {}});
+      origins.push_back(merged_origin(run.first, run.last));
+    }
+    run = {};
   }
+  if (run.start && !kept.empty()) kept.back().points.back() = run.end;  // a short tail joins the last piece
   sub.segments = std::move(kept);
   sub.origins = std::move(origins);
 }

@@ -175,9 +175,15 @@ template <class S> class BezierPath {
   /// The joints where the tangent direction jumps, in joint order (a closed path's last joint, at u = 0,
   /// comes last).
   const std::vector<PathCorner<S>>& corners() const { return corners_; }
-  /// Whether the joint at the start of segment `piece` is a corner.
+  /// Whether the joint at the start of segment `piece` is a corner: a binary search of corners(), which holds
+  /// the pieces in ascending order, a closed path's piece 0 last (asked for every joint, a linear search made
+  /// a path with as many corners as segments quadratic: 80,000 took 11 s).
   bool corner_at(std::size_t piece) const {
-    return std::any_of(corners_.begin(), corners_.end(), [&](const PathCorner<S>& c) { return c.piece == piece; });
+    if (piece == 0) return !corners_.empty() && corners_.back().piece == 0;
+    const auto first_not_before = std::lower_bound(corners_.begin(), corners_.end(), piece, [](const PathCorner<S>& c, std::size_t p) {
+      return c.piece != 0 && c.piece < p;
+    });
+    return first_not_before != corners_.end() && first_not_before->piece == piece;
   }
 
   Jet<S> jet(const S& u, int order) const {

@@ -10,9 +10,13 @@
 // B-spline. Boehm's knot insertion (The NURBS Book, eq. 5.15),
 //   Q'_i = a_i Q_i + (1 - a_i) Q_{i-1},  a_i = (u - u_i) / (u_{i+p} - u_i)   for k-p+1 <= i <= k,
 // (u_k <= u < u_{k+1}; Q'_i = Q_i below that range and Q_{i-1} above it) inserts one knot without changing
-// the curve. Every distinct knot value in [u_p, u_n] is inserted until its multiplicity is p; then each
-// non-empty span [u_j, u_{j+1}] is the Bezier curve with homogeneous control points Q_{j-p}..Q_j, projected
-// back to (P, w). A polynomial curve (all weights 1) gives polynomial pieces.
+// the curve. On a non-empty span [u_j, u_{j+1}] the curve depends only on Q_{j-p}..Q_j and the knots
+// u_{j-p}..u_{j+p+1} (eq. 2.5: N_{i,p} vanishes outside [u_i, u_{i+p+1}]), so each span is converted on its
+// own: both span ends are inserted into that local B-spline until their multiplicity is p, and the span is
+// then the Bezier curve with the p + 1 homogeneous control points between them, projected back to (P, w).
+// O(p^2) per span: the conversion is linear in the number of control points. A piece's start is set to the
+// previous piece's end (the same point C(u_j), computed twice to round-off), so joints are shared exactly.
+// A polynomial curve (all weights 1) gives polynomial pieces.
 //
 // Corners: at every joint between consecutive pieces (and the closing joint of a closed curve) the tangent
 // directions are compared (direction towards the first control point distinct from the joint, so zero end
@@ -131,46 +135,63 @@ template <class S> void validate_nurbs(const Nurbs<S>& c) {
     throw std::invalid_argument(where + "empty parameter range: knot " + std::to_string(p) + " (" +
                                 detail::nurbs_number(to_double(c.lo())) + ") must be less than knot " + std::to_string(n) +
                                 " (" + detail::nurbs_number(to_double(c.hi())) + ")");
-  for (std::size_t i = 0; i < c.knots.size(); ++i) {
-    const int m = detail::knot_multiplicity(c.knots, c.knots[i]);
+  // The knots are non-decreasing (checked above): a value's multiplicity is the length of its run.
+  for (std::size_t i = 0, end = 0; i < c.knots.size(); i = end) {
+    while (end < c.knots.size() && c.knots[end] == c.knots[i]) ++end;
+    const std::size_t m = end - i;
     const bool interior = c.knots[i] > c.lo() && c.knots[i] < c.hi();
-    if (m > c.degree + 1 || (interior && m > c.degree))
+    if (m > p + 1 || (interior && m > p))
       throw std::invalid_argument(where + "knot value " + detail::nurbs_number(to_double(c.knots[i])) + " has multiplicity " +
                                   std::to_string(m) + "; at most degree (" + std::to_string(p) +
                                   ") inside the parameter range, degree + 1 at its ends (the curve would break apart)");
   }
 }
 
+namespace detail {
+
+/// Homogeneous Bezier control points of the span [U[j], U[j + 1]] (p <= j < number of points, U[j] < U[j + 1]):
+/// the local B-spline Q_{j-p}..Q_j on the knots U[j-p]..U[j+p+1] with both span ends inserted up to
+/// multiplicity p (see the header comment). The multiplicity of a span end counts the same in the local knots
+/// as in U: a valid vector has at most p + 1 equal knots, all within the window.
+template <class S>
+std::vector<Vec3<S>> span_to_bezier(int p, const std::vector<S>& U, const std::vector<Vec3<S>>& Q, std::size_t j) {
+  const std::size_t ps = static_cast<std::size_t>(p);
+  std::vector<S> L(U.begin() + static_cast<std::ptrdiff_t>(j - ps), U.begin() + static_cast<std::ptrdiff_t>(j + ps + 2));
+  std::vector<Vec3<S>> R(Q.begin() + static_cast<std::ptrdiff_t>(j - ps), Q.begin() + static_cast<std::ptrdiff_t>(j + 1));
+  const S a = U[j], b = U[j + 1];
+  for (const S& v : {a, b})
+    for (int m = knot_multiplicity(L, v); m < p; ++m) insert_knot(p, L, R, v);
+  std::size_t k = ps;  // the last local knot equal to a: the span is [L[k], L[k + 1]], its points R[k-p..k]
+  while (!(a < L[k + 1])) ++k;
+  return std::vector<Vec3<S>>(R.begin() + static_cast<std::ptrdiff_t>(k - ps), R.begin() + static_cast<std::ptrdiff_t>(k + 1));
+}
+
+}  // namespace detail
+
 /// Exact rational Bezier pieces of a valid NURBS curve (validate_nurbs is called first), with its corners.
 template <class S>
 NurbsPieces<S> nurbs_to_bezier(const Nurbs<S>& c, const S& corner_tolerance = BezierPathOptions<S>{}.corner_tolerance) {
   validate_nurbs(c);
-  const int p = c.degree;
-  const S lo = c.lo(), hi = c.hi();
-  std::vector<S> U = c.knots;
+  const std::vector<S>& U = c.knots;
   std::vector<Vec3<S>> Q;
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const S w = c.weight(i);
     Q.emplace_back(w * c.points[i].x(), w * c.points[i].y(), w);
   }
-  // Every distinct knot value in [lo, hi] up to multiplicity p.
-  std::vector<S> values;
-  for (const S& k : c.knots)
-    if (k >= lo && k <= hi && (values.empty() || !(values.back() == k))) values.push_back(k);
-  for (const S& v : values)
-    for (int m = detail::knot_multiplicity(U, v); m < p; ++m) detail::insert_knot(p, U, Q, v);
-
   NurbsPieces<S> out;
   out.closed = c.closed;
-  const std::size_t ps = static_cast<std::size_t>(p);
-  for (std::size_t j = ps; j < Q.size(); ++j) {
-    if (!(U[j] < U[j + 1]) || U[j] < lo || U[j + 1] > hi) continue;
+  Vec3<S> joint = Vec3<S>::Zero();  // the previous piece's last homogeneous point
+  for (std::size_t j = static_cast<std::size_t>(c.degree); j < c.points.size(); ++j) {
+    if (!(U[j] < U[j + 1])) continue;
+    std::vector<Vec3<S>> H = detail::span_to_bezier(c.degree, U, Q, j);
+    if (!out.segments.empty()) H.front() = joint;  // C(U[j]) as the previous piece ends it
+    joint = H.back();
     BezierSegment<S> seg;
     bool rational = false;
-    for (std::size_t l = j - ps; l <= j; ++l) {
-      seg.points.push_back(Q[l].template head<2>() / Q[l].z());
-      seg.weights.push_back(Q[l].z());
-      rational = rational || !(Q[l].z() == S(1));
+    for (const Vec3<S>& h : H) {
+      seg.points.push_back(h.template head<2>() / h.z());
+      seg.weights.push_back(h.z());
+      rational = rational || !(h.z() == S(1));
     }
     if (!rational) seg.weights.clear();
     if (out.breaks.empty()) out.breaks.push_back(U[j]);

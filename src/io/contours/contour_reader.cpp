@@ -169,18 +169,20 @@ std::vector<std::size_t> join_straight_runs(std::vector<BezierSegment<double>>& 
 std::vector<std::string> describe_joints(const BezierPath<double>& path, const JointDescriber& describe,
                                          const std::string& what, const ContourContext& ctx) {
   std::vector<std::string> labels;
+  const std::size_t n = path.segments().size();
+  std::vector<bool> corner_at(n, false);  // by piece: one pass, not a search of corners() per joint
   for (const PathCorner<double>& c : path.corners()) {
+    corner_at[c.piece] = true;
     labels.push_back(describe(c.piece) + ", turning " + fmt(rad_to_deg(c.turn)) + " deg");
     ctx.note(what + ": corner " + labels.back() + " at (" + fmt(c.point.x()) + ", " + fmt(c.point.y()) +
              "): a contact stops there (status corner)");
   }
   // Tangent joints (not corners) where the signed curvature kappa = (p' x p'') / |p'|^3 jumps.
-  const std::size_t n = path.segments().size();
   const std::size_t joints = path.domain().closed ? n : n - 1;
   const double extent = path.total_length();
   for (std::size_t j = 0; j < joints; ++j) {
     const std::size_t next = (j + 1) % n;
-    if (path.corner_at(next)) continue;
+    if (corner_at[next]) continue;
     const double kl = contour_point(path.segment_jet(j, 1.0, 2), 2).curvature();
     const double kr = contour_point(path.segment_jet(next, 0.0, 2), 2).curvature();
     if (!std::isfinite(kl) || !std::isfinite(kr)) continue;  // a stationary end: no curvature there

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent reference for rollkin's SVG reader (tests/test_io_svg_reader.cpp).
 
-Usage: svgelements_points.py FILE.svg ID [PPI]
+Usage: svgelements_points.py FILE.svg ID[,ID...] [PPI [map]]
 
 Parses FILE.svg with svgelements (python3-svgelements), which applies every transform of the element and
 of its ancestors and the root viewBox with width/height (at PPI px per inch, default 96), and prints the
@@ -20,6 +20,13 @@ everything else (transforms, viewBox, preserveAspectRatio, shapes, arcs) is svge
                                   sweep turns when (u, v) is positively oriented, the other way otherwise)
     Z                             the subpath is closed
 Moves and zero-length closes are left out; a second Move is printed as "M" (more than one subpath).
+With several ids (comma-separated), each element's lines follow a line "P ID".
+With "map", svgelements reads the path data (arc centres and sweeps by its own F.6.5) and composes the
+element's transforms, and the script maps the untransformed segments by that matrix: control points, and an
+arc's centre and semi-axis end points (an affine map keeps the eccentric parameterisation, so the sweep is
+the untransformed one). svgelements' own transformed arcs (reify) can be the wrong arc of the ellipse under a
+skew or non-uniform scale with a reflection (seeded random test in test_io_svg_reader.cpp, path r8: F.6.5
+computed by hand and rollkin agree, svgelements' reified arc runs elsewhere).
 """
 import io
 import math
@@ -54,13 +61,50 @@ def exact_root_size(text):
     return text[: root.start()] + tag + text[root.end() :]
 
 
-def main(file, element_id, ppi):
+def main(file, element_id, ppi, mapped=False):
     with open(file, encoding="utf-8") as f:
         text = exact_root_size(f.read())
-    svg = SVG.parse(io.StringIO(text), reify=True, ppi=ppi)
-    element = svg.get_element_by_id(element_id)
-    if element is None:
-        sys.exit(f"svgelements: no element with id {element_id!r} in {file}")
+    svg = SVG.parse(io.StringIO(text), reify=not mapped, ppi=ppi)
+    ids = element_id.split(",")
+    for one in ids:
+        element = svg.get_element_by_id(one)
+        if element is None:
+            sys.exit(f"svgelements: no element with id {one!r} in {file}")
+        if len(ids) > 1:
+            print("P", one)
+        if mapped:
+            print_mapped_segments(element)
+        else:
+            print_segments(element)
+
+
+def print_mapped_segments(element):
+    """The element's untransformed segments mapped by its transform (see "map" in the module comment)."""
+    m = element.transform
+    moves = 0
+    for s in Path(element).segments(transformed=False):
+        if isinstance(s, Move):
+            moves += 1
+            if moves > 1:
+                print("M")
+        elif isinstance(s, Close):
+            if s.start != s.end:
+                print("L", pts(s.start * m, s.end * m))
+            print("Z")
+        elif isinstance(s, Line):
+            print("L", pts(s.start * m, s.end * m))
+        elif isinstance(s, QuadraticBezier):
+            print("Q", pts(s.start * m, s.control * m, s.end * m))
+        elif isinstance(s, CubicBezier):
+            print("C", pts(s.start * m, s.control1 * m, s.control2 * m, s.end * m))
+        elif isinstance(s, Arc):
+            c = s.center * m
+            print("A", pts(s.start * m, s.end * m, c, s.prx * m - c, s.pry * m - c), repr(float(s.sweep)))
+        else:
+            sys.exit(f"svgelements: unexpected segment {type(s).__name__}")
+
+
+def print_segments(element):
     moves = 0
     for s in Path(element).segments():
         if isinstance(s, Move):
@@ -93,6 +137,6 @@ def main(file, element_id, ppi):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4):
+    if len(sys.argv) not in (3, 4, 5) or (len(sys.argv) == 5 and sys.argv[4] != "map"):
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2], float(sys.argv[3]) if len(sys.argv) == 4 else 96.0)
+    main(sys.argv[1], sys.argv[2], float(sys.argv[3]) if len(sys.argv) >= 4 else 96.0, len(sys.argv) == 5)
