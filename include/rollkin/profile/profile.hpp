@@ -159,8 +159,8 @@ template <class S> class Contour {
 
   // ---- the tangent-line extension beyond an open end (file comment) ----
   bool beyond_end(const S& u) const { return !domain_.closed && (u < domain_.lo || u > domain_.hi); }
-  /// u itself on the domain, else the end it lies beyond.
-  S nearest_end(const S& u) const { return u < domain_.lo ? domain_.lo : (u > domain_.hi ? domain_.hi : u); }
+  /// u itself on the domain (or on a closed contour), else the end it lies beyond.
+  S nearest_end(const S& u) const { return !beyond_end(u) ? u : (u < domain_.lo ? domain_.lo : domain_.hi); }
   /// Arc length along the extension from end e out to u: (u - e) |p'(e)|; zero on the domain.
   S overhang(const S& u, const S& e) const { return u == e ? S(0) : S((u - e) * speed_on_domain(e)); }
   S speed_on_domain(const S& u) const { return jet_on_domain(u, 1).d1.norm(); }
