@@ -72,55 +72,33 @@ def main(file, element_id, ppi, mapped=False):
             sys.exit(f"svgelements: no element with id {one!r} in {file}")
         if len(ids) > 1:
             print("P", one)
-        if mapped:
-            print_mapped_segments(element)
-        else:
-            print_segments(element)
+        print_segments(element, mapped)
 
 
-def print_mapped_segments(element):
-    """The element's untransformed segments mapped by its transform (see "map" in the module comment)."""
+def print_segments(element, mapped=False):
+    """The element's segments: as svgelements transforms them, or (mapped) its untransformed segments mapped
+    by its transform (see "map" in the module comment)."""
     m = element.transform
+    at = (lambda p: p * m) if mapped else (lambda p: p)
     moves = 0
-    for s in Path(element).segments(transformed=False):
+    for s in Path(element).segments(transformed=not mapped):
         if isinstance(s, Move):
             moves += 1
             if moves > 1:
                 print("M")
         elif isinstance(s, Close):
             if s.start != s.end:
-                print("L", pts(s.start * m, s.end * m))
+                print("L", pts(at(s.start), at(s.end)))
             print("Z")
         elif isinstance(s, Line):
-            print("L", pts(s.start * m, s.end * m))
+            print("L", pts(at(s.start), at(s.end)))
         elif isinstance(s, QuadraticBezier):
-            print("Q", pts(s.start * m, s.control * m, s.end * m))
+            print("Q", pts(at(s.start), at(s.control), at(s.end)))
         elif isinstance(s, CubicBezier):
-            print("C", pts(s.start * m, s.control1 * m, s.control2 * m, s.end * m))
-        elif isinstance(s, Arc):
+            print("C", pts(at(s.start), at(s.control1), at(s.control2), at(s.end)))
+        elif isinstance(s, Arc) and mapped:
             c = s.center * m
             print("A", pts(s.start * m, s.end * m, c, s.prx * m - c, s.pry * m - c), repr(float(s.sweep)))
-        else:
-            sys.exit(f"svgelements: unexpected segment {type(s).__name__}")
-
-
-def print_segments(element):
-    moves = 0
-    for s in Path(element).segments():
-        if isinstance(s, Move):
-            moves += 1
-            if moves > 1:
-                print("M")
-        elif isinstance(s, Close):
-            if s.start != s.end:
-                print("L", pts(s.start, s.end))
-            print("Z")
-        elif isinstance(s, Line):
-            print("L", pts(s.start, s.end))
-        elif isinstance(s, QuadraticBezier):
-            print("Q", pts(s.start, s.control, s.end))
-        elif isinstance(s, CubicBezier):
-            print("C", pts(s.start, s.control1, s.control2, s.end))
         elif isinstance(s, Arc):
             c = s.center
             u = s.prx - c
