@@ -9,6 +9,7 @@
 #include "rollkin/io/units.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/continuation.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"  // the 50-digit solver: src/solve/instantiate_mpfr50.cpp
 
 namespace rollkin {
 

@@ -22,6 +22,7 @@
 #include "rollkin/analysis.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,6 +16,7 @@
 #include "rollkin/design_check.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 
 #include <nlohmann/json.hpp>
 

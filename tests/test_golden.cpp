@@ -13,6 +13,7 @@
 #include "rollkin/io/units.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 
 #include <cstdlib>
 #include <string>

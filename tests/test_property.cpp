@@ -17,6 +17,7 @@
 #include "mechanisms.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 #include "test_support.hpp"
 
 #include <algorithm>

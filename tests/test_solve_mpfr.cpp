@@ -14,6 +14,7 @@
 #include "mechanisms.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 
 #include <chrono>
 #include <cstdlib>

@@ -9,6 +9,7 @@
 
 #include "mechanisms.hpp"
 #include "rollkin/scalar_mpfr.hpp"
+#include "rollkin/solve/mpfr50_instances.hpp"
 
 #include <cmath>
 #include <functional>
