@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE io_sweep_table
 #include <boost/test/unit_test.hpp>
 
+#include "paper_sweep.hpp"
 #include "test_support.hpp"
 
 #include "rollkin/io/output_set.hpp"
@@ -19,33 +20,7 @@ using namespace rollkin;
 
 namespace {
 
-/// The paper example swept from -50 to `to` degrees by `step`, past its dead point (one limit, then
-/// not_reached rows with NaN).
-struct PaperSweep {
-  io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
-  io::Sweep sw;
-  std::vector<double> inputs, values;
-  SweepResult<double> result;
-
-  PaperSweep(double to, double step) : sw(*scene.sweep), result(solve(to, step)) {}
-
- private:
-  SweepResult<double> solve(double to, double step) {
-    sw.from = -50;
-    sw.to = to;
-    sw.step = step;
-    inputs = io::sweep_inputs(sw);
-    values = io::sweep_values(sw);
-    SolveData<double> sd(scene.mechanism);
-    VectorX<double> q = scene.guess;
-    const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
-    BOOST_TEST_REQUIRE(assembly.ok());
-    SweepResult<double> r = sweep(scene.mechanism, sd, q, assembly, sw.driver, inputs);
-    BOOST_TEST_REQUIRE(r.limits.size() == 1u);
-    BOOST_TEST_REQUIRE(!r.has_pose(inputs.size() - 1));
-    return r;
-  }
-};
+using testing::PaperSweep;
 
 /// The CSV of `out` as write_sweep_csv writes it with `threads` into scratch file `name`, read back.
 std::string written_csv(const io::SweepOutput& out, bool rates, int threads, const std::string& name) {

@@ -97,7 +97,8 @@ struct Frames {
 
 Frames frames_of(const OutputContext& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
-  const SweepResult<double>& result = ctx.result;
+  const io::SweepRows& result = ctx.result;
+  io::RowReader rows(result);
   KinematicsData<double> kin(m);
   Frames f;
   f.pose = io::pick_frames(result.size(), [&](std::size_t k) { return static_cast<int>(result.status(k)); });
@@ -106,7 +107,7 @@ Frames frames_of(const OutputContext& ctx) {
     f.links.emplace_back();
     f.contacts.emplace_back();
     if (!f.has.back()) continue;
-    evaluate_pairs<double>(m, result.q(k), nullptr, 1, kin);  // as csv_text: the same link poses
+    evaluate_pairs<double>(m, rows.q(k), nullptr, 1, kin);  // as csv_text: the same link poses
     f.links.back() = link_poses(m, kin);
     f.contacts.back() = contact_points(m, kin, f.links.back());
   }
@@ -155,11 +156,12 @@ LinkCentrodes centrodes_of(const OutputContext& ctx, const Frames& f, const Eige
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Eigen::Vector2d none(nan, nan);
   // At the frames' poses (as centrodes() computes them at every pose of a sweep).
+  io::RowReader rows(ctx.result);
   for (std::size_t k = 0; k < f.pose.size(); ++k) {
     std::vector<Twist<double>> twists;
     if (f.has[k]) {
-      evaluate_pairs<double>(m, ctx.result.q(f.pose[k]), nullptr, 1, kin);
-      twists = link_twists<double>(m, kin, f.links[k], ctx.result.qdot(f.pose[k]));
+      evaluate_pairs<double>(m, rows.q(f.pose[k]), nullptr, 1, kin);
+      twists = link_twists<double>(m, kin, f.links[k], rows.qdot(f.pose[k]));
     }
     for (std::size_t l = 0; l < m.links.size(); ++l) {
       if (static_cast<int>(l) == m.ground) continue;

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "animation.hpp"
 
+#include "rollkin/io/sweep_file.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/interference.hpp"
 
@@ -171,14 +172,26 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   const bool values_needed =
       !(o.csv.empty() && o.plot.empty() && o.draw.empty() && o.animate.empty()) || o.interference || o.verbose;
   std::optional<SweepResult<double>> result;
+  std::optional<io::SweepFile> file;
   SweepSummary<double> found;
   if (values_needed) {
-    result = sweep(m, sd, q, assembly, sw.driver, inputs);
-    found = summarise(*result);
+    // The files alone read the poses in row order: kept in a temporary file, memory stays that of a summary
+    // (io/sweep_file.hpp). The interference and design checks take the whole result in memory.
+    std::optional<io::SweepRows> rows;
+    if (o.interference || o.verbose) {
+      result = sweep(m, sd, q, assembly, sw.driver, inputs);
+      found = summarise(*result);
+      rows.emplace(*result);
+    } else {
+      file.emplace(assembly, inputs, m.variable_count());
+      io::sweep_to_file(m, sd, q, assembly, sw.driver, inputs, {}, *file);
+      found = *file;
+      rows.emplace(*file);
+    }
     // Everything is computed before anything is written, and then written all or nothing.
     g_doing = "building the output files";
     const std::vector<double> file_values = io::sweep_values(sw);
-    const cli::OutputContext ctx{scene, sw, *result, file_values, o.analysis};
+    const cli::OutputContext ctx{scene, sw, *rows, file_values, o.analysis};
     run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink, o.jobs); });
     run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
     run.set_output("--draw", [&] { return cli::draw_svg(ctx); });

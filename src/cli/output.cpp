@@ -38,12 +38,12 @@ std::string centrode_text(const OutputContext& ctx, const std::vector<InstantCen
                      "; one point per input value, in sweep order\nx y\n";
   for (std::size_t k = 0; k < centres.size(); ++k) {
     const InstantCentre<double>& c = centres[k];
-    const SweepPose<double>& p = ctx.result.poses[k];
+    const SolveStatus status = ctx.result.status(k);
     if (c.finite) {
       const Vec2<double>& x = in_a ? c.in_a : c.in_b;
       text += io::format_double(x.x()) + " " + io::format_double(x.y()) + "\n";
-    } else if (!p.report.has_pose()) {
-      text += "# " + input(k) + ": not solved (" + to_string(p.report.status) + ")\n";
+    } else if (!ctx.result.has_pose(k)) {
+      text += "# " + input(k) + ": not solved (" + to_string(status) + ")\n";
     } else {
       text += "# " + input(k) + ": centre at infinity (pure relative translation, direction (" +
               io::format_double(c.direction.x()) + ", " + io::format_double(c.direction.y()) + ") in the world frame)\n";
@@ -188,11 +188,11 @@ std::string tile_documents(const std::vector<std::string>& svgs, int w, int h, i
 }
 
 /// The solved poses the drawing shows: up to `count`, spread evenly over the solved ones in input order.
-std::vector<std::size_t> poses_to_draw(const SweepResult<double>& result, std::size_t count) {
+std::vector<std::size_t> poses_to_draw(const io::SweepRows& result, std::size_t count) {
   std::vector<std::size_t> solved;
-  for (std::size_t i = 0; i < result.poses.size(); ++i)
-    if (result.poses[i].report.has_pose()) solved.push_back(i);
-  std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return result.poses[a].input < result.poses[b].input; });
+  for (std::size_t i = 0; i < result.size(); ++i)
+    if (result.has_pose(i)) solved.push_back(i);
+  std::sort(solved.begin(), solved.end(), [&](auto a, auto b) { return result.input(a) < result.input(b); });
   std::vector<std::size_t> pick;
   count = std::min(count, solved.size());
   for (std::size_t k = 0; k < count; ++k)
@@ -210,6 +210,7 @@ std::string draw_svg(const OutputContext& ctx) {
   const std::vector<std::size_t> pick = poses_to_draw(ctx.result, 4);
   const std::vector<LinkSketch> sketches = link_sketches(m);
   KinematicsData<double> kin(m);
+  io::RowReader rows(ctx.result);
   struct Placed {
     std::vector<std::vector<Eigen::Vector2d>> lines;  // contours and bodies, world
     std::vector<bool> closed, body;
@@ -222,7 +223,7 @@ std::string draw_svg(const OutputContext& ctx) {
     box << std::min(box(0), p.x()), std::min(box(1), p.y()), std::max(box(2), p.x()), std::max(box(3), p.y());
   };
   for (std::size_t k = 0; k < pick.size(); ++k) {
-    evaluate_pairs<double>(m, ctx.result.poses[pick[k]].q, nullptr, 2, kin);
+    evaluate_pairs<double>(m, rows.q(pick[k]), nullptr, 2, kin);
     const std::vector<SE2<double>> lp = link_poses(m, kin);
     Placed& pl = placed[k];
     for (std::size_t l = 0; l < sketches.size(); ++l) {
@@ -247,11 +248,11 @@ std::string draw_svg(const OutputContext& ctx) {
   const int input = ctx.sweep.variable;
   std::vector<std::string> panels;
   for (std::size_t k = 0; k < pick.size(); ++k) {
-    const SweepPose<double>& pose = ctx.result.poses[pick[k]];
+    const SolveStatus status = ctx.result.status(pick[k]);
     io::SvgDrawing d(w, h, 24);
     d.set_title(base_name(scene.file) + ": " + m.variables[input].name + " = " + io::format_double(input_column(ctx, pick[k])) +
                 (input_column_unit(ctx).empty() ? "" : " " + input_column_unit(ctx)) +
-                (pose.report.ok() ? "" : " (" + std::string(to_string(pose.report.status)) + ")"));
+                (status == SolveStatus::Converged ? "" : " (" + std::string(to_string(status)) + ")"));
     d.set_world_box(box(0), box(1), box(2), box(3));
     const Placed& pl = placed[k];
     for (std::size_t i = 0; i < pl.lines.size(); ++i) {

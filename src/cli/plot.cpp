@@ -60,7 +60,7 @@ struct ChartSpec {
 
 /// The x axis of every chart: the input column (output units) of each pose, and its range.
 struct InputAxis {
-  const SweepResult<double>& result;
+  io::SweepRows result;
   double scale, lo, hi;
   InputAxis(const OutputContext& ctx)
       : result(ctx.result), scale(out_scale(ctx.scene.mechanism, ctx.sweep.variable)),
@@ -96,6 +96,7 @@ void chart_values(const OutputContext& ctx, const InputAxis& axis, const std::ve
   for (std::size_t c = 0; c < specs.size(); ++c) series[c].assign(specs[c].names.size(), axis.series(width));
   turns.assign(m.links.size(), false);
   AnalysisData<double> data(m);
+  io::RowReader rows(ctx.result);
   for (std::size_t r = 0; r < ctx.result.size(); ++r) {
     const double x = axis.at(r);
     if (!ctx.result.has_pose(r)) {
@@ -103,7 +104,7 @@ void chart_values(const OutputContext& ctx, const InputAxis& axis, const std::ve
         for (io::SeriesReducer& s : chart) s.add(x, kNaN);
       continue;
     }
-    const PoseAnalysis<double> a = analyse_pose(m, ctx.result.q(r), ctx.result.qdot(r), data);
+    const PoseAnalysis<double> a = analyse_pose(m, rows.q(r), rows.qdot(r), data);
     for (std::size_t c = 0; c < specs.size(); ++c)
       for (std::size_t k = 0; k < specs[c].names.size(); ++k) series[c][k].add(x, specs[c].value(a, k));
     for (std::size_t l = 0; l < m.links.size(); ++l) turns[l] = turns[l] || a.angular_acceleration[l] != 0.0;
@@ -236,9 +237,10 @@ std::string plot_svg(const OutputContext& ctx) {
       charted.push_back(i);
       series.push_back(axis.series(width));
     }
+  io::RowReader rows(ctx.result);
   for (std::size_t r = 0; r < ctx.result.size(); ++r) {
     const bool solved = ctx.result.has_pose(r);
-    const auto q = ctx.result.q(r);
+    const auto q = rows.q(r);
     for (std::size_t j = 0; j < charted.size(); ++j)
       series[j].add(axis.at(r), solved ? q(charted[j]) * out_scale(m, charted[j]) : kNaN);
   }

@@ -83,9 +83,10 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
 /// What a row is computed with, allocated once per table (per thread): the pose's variables, the pairs
 /// evaluated there, the links' poses, the analysis' workspace (with the analysis columns), the row's values.
 struct RowWork {
-  RowWork(const Mechanism<double>& m, bool analysis) : kin(m), link_pose(m.links.size()) {
-    if (analysis) analysis_data.emplace(m);
+  RowWork(const SweepOutput& out) : rows(out.result), kin(out.scene.mechanism), link_pose(out.scene.mechanism.links.size()) {
+    if (out.analysis) analysis_data.emplace(out.scene.mechanism);
   }
+  RowReader rows;
   KinematicsData<double> kin;
   VectorX<double> q;
   std::vector<SE2<double>> link_pose;
@@ -97,15 +98,15 @@ struct RowWork {
 void row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r, RowWork& w) {
   const Mechanism<double>& m = out.scene.mechanism;
   const double in_scale = output_scale(m, out.sweep.variable);
-  const SweepResult<double>& res = out.result;
+  const SweepRows& res = out.result;
   std::vector<double>& row = w.row;
   row.clear();
   row.push_back(input_column(out, r));
   const bool ok = res.has_pose(r);  // values also for singular poses
-  const auto q = res.q(r);
+  const auto q = w.rows.q(r);
   for (int i : others) row.push_back(ok ? q(i) * output_scale(m, i) : kNaN);
   if (rates) {
-    const auto qdot = res.qdot(r);
+    const auto qdot = w.rows.qdot(r);
     for (int i : m.unknowns) row.push_back(ok ? qdot(i) * output_scale(m, i) / in_scale : kNaN);
   }
   if (ok) {
@@ -119,10 +120,10 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
     row.push_back(ok ? from_radians(lp.angle(), kOutputAngle) : kNaN);
   }
   if (out.analysis) {
-    if (ok) analysis_values(m, analyse_pose(m, q, res.qdot(r), *w.analysis_data), in_scale, row);
+    if (ok) analysis_values(m, analyse_pose(m, q, w.rows.qdot(r), *w.analysis_data), in_scale, row);
     else row.resize(row.size() + analysis_column_count(m), kNaN);
   }
-  row.push_back(ok ? res.report(r).residual : kNaN);
+  row.push_back(ok ? w.rows.report(r).residual : kNaN);
 }
 
 /// What the rows of one CSV table share.
@@ -181,7 +182,7 @@ SweepTable sweep_table(const SweepOutput& out, bool rates) {
   const std::size_t rows = out.result.size();
   t.columns.assign(t.names.size(), std::vector<double>(rows));
   t.status.reserve(rows);
-  RowWork w(out.scene.mechanism, out.analysis);
+  RowWork w(out);
   for (std::size_t r = 0; r < rows; ++r) {
     row_values(out, rates, others, r, w);
     if (w.row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
@@ -199,7 +200,7 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   const std::size_t rows = out.result.size();
   const std::size_t workers = batch_workers((rows + kRowsPerBlock - 1) / kRowsPerBlock, threads);
   if (workers <= 1) {
-    RowWork w(out.scene.mechanism, out.analysis);
+    RowWork w(out);
     for (std::size_t r = 0; r < rows; ++r) {
       append_table_row(table, r, w, sink.buffer());
       sink.flush_full();
@@ -210,14 +211,14 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   // round's blocks in row order: two rounds of text are held, whatever the table's size. Each thread's row
   // buffers and text sit on cache lines of their own (appending to neighbouring strings would share them).
   struct alignas(64) Worker {
-    Worker(const Mechanism<double>& m, bool analysis) : work(m, analysis) {}
+    explicit Worker(const SweepOutput& out) : work(out) {}
     RowWork work;
     std::string text;
   };
   const std::size_t per_round = workers * kRowsPerBlock;
   std::vector<Worker> worker;
   worker.reserve(workers);
-  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out.scene.mechanism, out.analysis);
+  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out);
   std::vector<std::string> ready(workers);
   std::vector<std::future<void>> running;  // declared last: destroyed (waited for) before what it uses
   const auto start_round = [&](std::size_t first) {

@@ -10,6 +10,7 @@
 
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
+#include "rollkin/io/sweep_rows.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -33,7 +34,7 @@ std::vector<int> contact_pairs(const Mechanism<double>& m);
 struct SweepOutput {
   const Scene& scene;
   const Sweep& sweep;
-  const SweepResult<double>& result;
+  SweepRows result;  // in memory (SweepResult) or in a file (SweepFile)
   const std::vector<double>& inputs;  // requested input values in the file's units (one per pose)
   // Adds the contact analysis columns (docs/analysis.md). Each pose is analysed as its row is built, by the
   // thread that builds it, and not kept (kept, the analyses take about 1 KB per pose: 150 MB for 150,001

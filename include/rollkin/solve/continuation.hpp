@@ -616,6 +616,16 @@ void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, 
 
 }  // namespace detail
 
+/// The continuation of sweep() reported into the caller's `out` instead of a SweepResult: any type with
+/// SweepResult's reporting members (`holds_values`, `limits`, `set_pose`, `set_report`, `share_report`, and
+/// `set_interpolated_pose` when it holds no values), e.g. a sweep kept in a file (io/sweep_file.hpp). Each
+/// side of the assembly input is reported nearest first: ascending above it, then descending below it.
+template <class S, class Out>
+void sweep_into(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, const SolveReport<S>& assembly, int driver,
+                const std::vector<S>& inputs, const ContinuationSettings<S>& cfg, Out& out) {
+  if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
+}
+
 /// Sweeps driver number `driver` (index into m.drivers) over `inputs`, starting from the assembled pose q0
 /// (sd.kin.reference must hold the assembly pose, as assemble() leaves it).
 template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0,
@@ -624,7 +634,7 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
   // Sized once for every requested input: storing a pose below allocates nothing.
   SweepResult<S> out(assembly, inputs, static_cast<Eigen::Index>(m.variable_count()),
                      assembly.ok() ? SolveStatus::NotReached : assembly.status);
-  if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
+  sweep_into(m, sd, q0, assembly, driver, inputs, cfg, out);
   out.zero_columns_without_values();
   return out;
 }
@@ -635,7 +645,7 @@ template <class S> SweepSummary<S> sweep_summary(const Mechanism<S>& m, SolveDat
                                                  const SolveReport<S>& assembly, int driver, const std::vector<S>& inputs,
                                                  const ContinuationSettings<S>& cfg = {}) {
   SweepSummary<S> out(assembly, inputs.size(), assembly.ok() ? SolveStatus::NotReached : assembly.status);
-  if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
+  sweep_into(m, sd, q0, assembly, driver, inputs, cfg, out);
   out.sort_singular();
   return out;
 }

@@ -175,7 +175,7 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     r.residual = rep.residual;
     r.condition = rep.condition;
     r.full = -1;
-    if (fits_record(rep)) return;
+    if (fits_record(rep, this->assembly)) return;
     r.full = static_cast<std::int32_t>(this->full_.size());
     this->full_.push_back(rep);
   }
@@ -200,10 +200,11 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     return this->assembly.ok();
   }
 
- private:
-  bool fits_record(const SolveReport<S>& rep) const {
+  /// Whether a pose's report is told by a Record alone (no detail, no limit, the assembly's sizes), so that
+  /// only the reports that say more are kept whole.
+  static bool fits_record(const SolveReport<S>& rep, const SolveReport<S>& assembly) {
     return rep.detail.empty() && rep.limit_input == S(0) && rep.pair < 0 && rep.contour < 0 && rep.corner < 0 &&
-           rep.equations == this->assembly.equations && rep.unknowns == this->assembly.unknowns;
+           rep.equations == assembly.equations && rep.unknowns == assembly.unknowns;
   }
 };
 
