@@ -32,9 +32,10 @@ Files and what each exercises:
                     y = 0.5 x^2, x in [-2, 2], as a 2-span polynomial quadratic B-spline (control points
                     (-2, 2), (-1, 0), (1, 0), (2, 2), knots 0 0 0 1 2 2 2; each span's Bezier points are
                     the parabola's end points and tangent intersection, so it is the parabola exactly).
-  errors.dxf        GAP: two LINEs 1e-3 apart. BRANCH: three LINEs meeting at one point. TEXT: a LINE and a
-                    TEXT. INSERT: a LINE and an INSERT of block "B". FITONLY: a SPLINE by fit points only.
-                    ORDER: the second LINE meets the first one's start, not its end.
+  errors.dxf        GAP: two LINEs 1e-3 apart (two chains). BRANCH: three LINEs meeting at one point. TEXT: a
+                    LINE and a TEXT (passed over). INSERT: a LINE and an INSERT of block "B" apart from it (two
+                    chains). FITONLY: a SPLINE by fit points only. ORDER: the second LINE meets the first one's
+                    start (chained in any order).
   units_miles.dxf   $INSUNITS 3 (miles): refused.
   scenes_mm.dxf     $INSUNITS 4, contours of whole scenes (tests/test_io_cad_scenes.cpp), drawn in millimetres for
                     scenes in metres: PARABOLA_MM the paper's parabola y = 0.5 x^2 (x in metres) as the 2-span
@@ -229,11 +230,11 @@ def errors():
     order = [msp.add_line((0, 0), (1, 0), dxfattribs={"layer": "ORDER"}),
              msp.add_line((0, 1), (0, 0), dxfattribs={"layer": "ORDER"})]
     save(doc, "errors")
-    answer("errors", "GAP", gap, [("names", label(gap[0])), ("names", label(gap[1])), ("names", "gap of 0.001")], False)
+    answer("errors", "GAP", gap, [("names", label(gap[0])), ("names", label(gap[1])), ("names", "form 2 chains")], False)
     answer("errors", "BRANCH", branch, [("names", label(branch[2])), ("names", label(branch[0])),
                                         ("names", label(branch[1])), ("names", "branch")], False)
     answer("errors", "TEXT", text, [("names", label(text[1])), ("names", "unsupported")], False)
-    answer("errors", "INSERT", insert, [("names", label(insert[1])), ("names", "unsupported")], False)
+    answer("errors", "INSERT", insert, [("names", label(insert[1])), ("names", "form 2 chains")], False)
     answer("errors", "FITONLY", fit, [("names", label(fit[0])), ("names", "only fit points")], False)
     answer("errors", "ORDER", order, [("names", label(order[1])), ("names", "chain's start")], False)
 
