@@ -14,9 +14,14 @@
 #include "bezier_distance.hpp"
 #include "test_support.hpp"
 
+#include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/dxf.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -261,4 +266,55 @@ BOOST_AUTO_TEST_CASE(insert_depth_is_bounded) {
   const std::string m = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"L", ""}); });
   BOOST_TEST(contains(m, "INSERTs deep; at most 32 are read"));
   BOOST_TEST(contains(m, "in INSERT 99"));
+}
+
+// The listing (io/contour_listing.hpp): every chain of every layer, each with the selector that picks exactly
+// it, checked by reading the selector back: the same entities, the same segments.
+BOOST_AUTO_TEST_CASE(listed_chains_are_selected_by_their_selectors) {
+  const std::filesystem::path dir = rollkin::testing::scratch_dir("io_dxf_cad_listing");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  ezdxf_cases(dir.string());
+  std::map<std::string, int> per_layer;
+  std::size_t selectable = 0, near_selectors = 0, handle_selectors = 0;
+  for (const std::string name : {"layers.dxf", "blocks.dxf", "tilt.dxf"}) {
+    const std::string file = (dir / name).string();
+    for (const rollkin::io::ListedChain& l : rollkin::io::list_dxf_contours(file)) {
+      ++per_layer[name + " " + l.group];
+      BOOST_TEST_CONTEXT(name << " " << l.group << " " << (l.entities.empty() ? std::string() : l.entities.front())) {
+        BOOST_TEST(!l.entities.empty());
+        if (l.selector.empty()) continue;
+        ++selectable;
+        const nlohmann::json j = nlohmann::json::parse(l.selector);
+        BOOST_TEST(j.at("type") == "dxf");
+        BOOST_TEST(j.at("file") == name);
+        DxfSelection sel;
+        if (j.contains("layer")) sel.layer = j.at("layer").get<std::string>();
+        if (j.contains("near")) sel.near = V(j.at("near")[0].get<double>(), j.at("near")[1].get<double>()), ++near_selectors;
+        if (j.contains("handles")) sel.handles = j.at("handles").get<std::vector<std::string>>(), ++handle_selectors;
+        const DxfContour c = rollkin::read_dxf_contour(file, sel);
+        BOOST_TEST(c.entities == l.entities, l.selector << " selects " << c.description);
+        BOOST_REQUIRE(c.segments.size() == l.segments.size());
+        for (std::size_t i = 0; i < c.segments.size(); ++i) BOOST_TEST((c.segments[i].points == l.segments[i].points));
+        BOOST_TEST(c.closed == l.closed);
+        BOOST_TEST(c.corners.size() == l.corners);
+      }
+    }
+  }
+  BOOST_TEST(per_layer["layers.dxf 0"] == 5);
+  BOOST_TEST(per_layer["blocks.dxf GRID"] == 6);
+  BOOST_TEST(per_layer["blocks.dxf LOOP"] == 1);  // the self-inserting block: listed with why, no selector
+  BOOST_TEST(near_selectors == 11u);              // 5 on layer 0, 6 on GRID
+  BOOST_TEST(handle_selectors == 1u);             // the LINE beside the unreadable tilted ARC
+  BOOST_TEST(per_layer["tilt.dxf TILT"] == 2);    // the LINE, and the tilted ARC listed with why
+  std::printf("listing: %zu selectable chains (%zu by near, %zu by handles)\n", selectable, near_selectors, handle_selectors);
+  // the CIRCLE (extrusion -Z, radius 15 around (100, -80)): its length and box
+  for (const rollkin::io::ListedChain& l : rollkin::io::list_dxf_contours((dir / "layers.dxf").string()))
+    if (l.entities.size() == 1 && l.entities[0].rfind("CIRCLE", 0) == 0) {
+      BOOST_TEST(std::abs(l.length - 2 * M_PI * 15) <= 1e-12 * 2 * M_PI * 15);
+      BOOST_TEST((l.min - V(85, -95)).norm() < 1e-12 * 30);  // the box's extremes are sampled points
+      BOOST_TEST((l.max - V(115, -65)).norm() < 1e-12 * 30);
+      BOOST_TEST(l.closed);
+      BOOST_TEST(l.corners == 0u);
+    }
 }

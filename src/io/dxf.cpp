@@ -460,6 +460,12 @@ std::pair<double, double> cos_sin_degrees(double degrees) {
 
 namespace dxf {
 
+void check_drawing(const Drawing& drawing, const std::string& file) {
+  DxfContour units;
+  set_units(units, drawing, file);
+  check_unique_handles(drawing.top_level(), file);
+}
+
 bool never_a_curve(const std::string& type) {
   for (const char* t : {"TEXT", "MTEXT", "ATTDEF", "ATTRIB", "DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "HATCH",
                         "MPOLYGON", "POINT", "VIEWPORT", "MULTILEADER", "MLEADER", "LEADER", "TOLERANCE", "IMAGE", "WIPEOUT",

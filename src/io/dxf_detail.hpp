@@ -160,6 +160,9 @@ struct Drawing {
 /// `disk_path` when that is the file and nothing follows EOF).
 Drawing read_drawing(const std::string& text, const std::string& disk_path, const std::string& file);
 
+/// What makes every selection of the drawing fail: an unsupported $INSUNITS, two entities with one handle.
+void check_drawing(const Drawing& drawing, const std::string& file);
+
 /// Entity types that are never curves (text, dimensions, hatches, viewports, ...): passed over.
 bool never_a_curve(const std::string& type);
 

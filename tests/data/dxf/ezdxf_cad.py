@@ -20,7 +20,7 @@ Drawings:
                drawn either way; a closed LWPOLYLINE with extrusion -Z; a 2D POLYLINE with extrusion -Z and a
                CIRCLE with extrusion -Z; a periodic SPLINE stored with n + 1 knots; a TEXT, a VIEWPORT and a
                MULTILEADER; text after 0 EOF.
-  tilt.dxf     an ARC with a tilted extrusion (an error).
+  tilt.dxf     an ARC with a tilted extrusion (an error) and a LINE on its layer.
   blocks.dxf   INSERTs of a block (LINE, ARC with extrusion -Z, ELLIPSE, SPLINE) with rotation, negative and
                non-uniform scale and a base point; a nested INSERT (a block holding a rotated, mirrored INSERT);
                a MINSERT array of a closed block (ARC + LINE), one copy picked by "near"; a block inserting
@@ -202,6 +202,7 @@ def layers(outdir, out):
     # considers every entity)
     doc = ezdxf.new("R2010")
     tilt = doc.modelspace().add_arc((0, 0), 5, 0, 90, dxfattribs={"layer": "TILT", "extrusion": (0, 0.6, 0.8)})
+    doc.modelspace().add_line((10, 0), (20, 0), dxfattribs={"layer": "TILT"})  # listed, selected by its handle
     path = os.path.join(outdir, "tilt.dxf")
     doc.saveas(path)
     out.error(path, "layer TILT", [label(tilt), "extrusion direction (0, 0.6, 0.8)"])
