@@ -41,7 +41,7 @@ import ezdxf
 from ezdxf.math import BSpline, Vec2, Vec3
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ezdxf_random import bulge_points, to_ocs  # noqa: E402
+from ezdxf_random import bulge_points, save_with_ratios, to_ocs  # noqa: E402
 
 SAMPLES = 40
 
@@ -142,7 +142,7 @@ def layers(outdir, out):
     arc_pts = points_of(arc)
     p2 = (40.0, 20.0)
     ell = msp.add_ellipse((30.0, 20.0), (10.0, 0, 0), 0.5, 0.0, math.pi / 2, dxfattribs=a0)
-    ell.dxf.ratio = 2.5  # QCAD 2 writes ratios above 1: the minor axis (N x M) 2.5 is the longer one
+    ell.dxf.unprotected_set("ratio", 2.5)  # QCAD 2 writes ratios above 1: the minor axis (N x M) 2.5 is the longer one
     ell.dxf.major_axis = (4.0, 0, 0)
     ell.dxf.center = (p2[0] - 4.0, p2[1])
     ell_pts = points_of(ell)
@@ -184,7 +184,7 @@ def layers(outdir, out):
     vp.dxf.status = 1
     vp.dxf.flags = 557152
     path = os.path.join(outdir, "layers.dxf")
-    doc.saveas(path)
+    save_with_ratios(doc, path, {ell.dxf.handle: 2.5})
     with open(path, "a") as f:  # what some exporters leave after EOF
         f.write("this is not DXF\n  garbage line 2\n")
 
