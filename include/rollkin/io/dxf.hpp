@@ -63,7 +63,8 @@
 // text up to it). Numbers are plain decimals read once by
 // std::from_chars, the texts on which libdxflib's own conversion agrees (docs/scene_format.md, "Numbers").
 // How skipped entities are found: libdxflib calls processCodeValuePair for every group before it
-// interprets it; the reader's adapter records from it, for every entity of the ENTITIES section, its type
+// interprets it; the reader's adapter records from it, for every entity of the ENTITIES and BLOCKS sections
+// (block definitions: for INSERTs), its type
 // (group 0), handle (5) and layer (8) and the group counts it needs to check libdxflib's arrays (knots,
 // control points, weights, fit points, LWPOLYLINE vertices). Parsing stays with libdxflib; an entity that
 // libdxflib passed to no callback is then still known by type and handle and is reported.

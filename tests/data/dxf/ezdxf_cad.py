@@ -20,7 +20,8 @@ Drawings:
                drawn either way; a closed LWPOLYLINE with extrusion -Z; a 2D POLYLINE with extrusion -Z and a
                CIRCLE with extrusion -Z; a periodic SPLINE stored with n + 1 knots; a TEXT, a VIEWPORT and a
                MULTILEADER; text after 0 EOF.
-  tilt.dxf     an ARC with a tilted extrusion (an error) and a LINE on its layer.
+  tilt.dxf     an ARC with a tilted extrusion (an error) and a LINE on its layer; a tilted CIRCLE, ELLIPSE,
+               LWPOLYLINE, POLYLINE and INSERT, each on a layer of its own (errors).
   blocks.dxf   INSERTs of a block (LINE, ARC with extrusion -Z, ELLIPSE, SPLINE) with rotation, negative and
                non-uniform scale and a base point; a nested INSERT (a block holding a rotated, mirrored INSERT);
                a MINSERT array of a closed block (ARC + LINE), one copy picked by "near"; a block inserting
@@ -203,10 +204,27 @@ def layers(outdir, out):
     doc = ezdxf.new("R2010")
     tilt = doc.modelspace().add_arc((0, 0), 5, 0, 90, dxfattribs={"layer": "TILT", "extrusion": (0, 0.6, 0.8)})
     doc.modelspace().add_line((10, 0), (20, 0), dxfattribs={"layer": "TILT"})  # listed, selected by its handle
+    # every entity type with an extrusion, tilted, on a layer of its own (the heavy POLYLINE's own extrusion, not
+    # its VERTEXes': it was read flattened in its OCS)
+    tilted = (0.6, 0, 0.8)
+    m = doc.modelspace()
+    kinds = {
+        "T_CIRCLE": m.add_circle((0, 0), 5, dxfattribs={"layer": "T_CIRCLE", "extrusion": tilted}),
+        "T_ELLIPSE": m.add_ellipse((0, 0), (0, 5, 0), 0.5, 0, 1, dxfattribs={"layer": "T_ELLIPSE", "extrusion": tilted}),
+        "T_LWPOLYLINE": m.add_lwpolyline([(0, 0, 0.5), (5, 0, 0)], format="xyb",
+                                         dxfattribs={"layer": "T_LWPOLYLINE", "extrusion": tilted}),
+        "T_POLYLINE": m.add_polyline2d([(0, 0, 0.5), (5, 0, 0)], format="xyb",
+                                       dxfattribs={"layer": "T_POLYLINE", "extrusion": tilted}),
+    }
+    blk = doc.blocks.new("TB")
+    blk.add_line((0, 0), (1, 0))
+    kinds["T_INSERT"] = m.add_blockref("TB", (0, 0), dxfattribs={"layer": "T_INSERT", "extrusion": tilted})
     path = os.path.join(outdir, "tilt.dxf")
     doc.saveas(path)
     out.error(path, "layer TILT", [label(tilt), "extrusion direction (0, 0.6, 0.8)"])
     out.error(path, "near 1.0 1.0", [label(tilt), "extrusion direction (0, 0.6, 0.8)"])
+    for layer, e in kinds.items():
+        out.error(path, f"layer {layer}", [label(e), "extrusion direction (0.6, 0, 0.8)"])
 
 
 def blocks(outdir, out):
