@@ -266,6 +266,12 @@ BOOST_AUTO_TEST_CASE(insert_depth_is_bounded) {
   const std::string m = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"L", ""}); });
   BOOST_TEST(contains(m, "INSERTs deep; at most 32 are read"));
   BOOST_TEST(contains(m, "in INSERT 99"));
+  // a MINSERT of 32767 x 32767 copies of an empty block: refused at once, not looped over
+  const std::string empty = "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nE\n70\n0\n10\n0\n20\n0\n0\nENDBLK\n8\n0\n0\nENDSEC\n";
+  const std::string grid = empty + "0\nSECTION\n2\nENTITIES\n0\nINSERT\n5\n98\n8\nL\n2\nE\n10\n0\n20\n0\n70\n32767\n71\n32767\n"
+                           "44\n1\n45\n1\n0\nENDSEC\n0\nEOF\n";
+  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(grid, DxfSelection{"L", ""}); }),
+                      "INSERT 98 places more than 1000000 entities and copies"));
 }
 
 // The listing (io/contour_listing.hpp): every chain of every layer, each with the selector that picks exactly

@@ -551,6 +551,12 @@ void Placer::place_in(const RawEntity& e, const Affine& m, const std::string& su
   if (!m.identity())
     for (Segment& s : p.segments)
       for (V& q : s.points) q = m(q);
+  for (const Segment& s : p.segments)
+    for (const V& q : s.points)
+      if (!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        throw InputError(file_, "line " + std::to_string(e.line),
+                         p.label + " reaches beyond the range of double precision (" + exact_number(q.x()) + ", " +
+                             exact_number(q.y()) + "); check its coordinates and the scales of the INSERTs placing it");
   out.push_back(std::move(p));
 }
 
@@ -587,6 +593,11 @@ void Placer::place_insert(const RawEntity& e, const Affine& m, const std::string
   const auto [c, s] = cos_sin_degrees(angle);
   const double mirror = n[2] < 0 ? -1 : 1;
   const long columns = col_spacing == 0 ? 1 : static_cast<long>(cols), lines = row_spacing == 0 ? 1 : static_cast<long>(rows);
+  placed_ += static_cast<std::size_t>(columns) * static_cast<std::size_t>(lines);  // copies, even of an empty block
+  if (placed_ > kDxfMaxPlacedEntities)
+    fail(e, "places more than " + std::to_string(kDxfMaxPlacedEntities) + " entities and copies (nested blocks and "
+              "MINSERT arrays, " + std::to_string(columns) + " x " + std::to_string(lines) + " here); a contour is one "
+              "chain: explode the blocks it is not in");
   stack.push_back(upper(e.name));
   for (long r = 0; r < lines; ++r)
     for (long k = 0; k < columns; ++k) {

@@ -211,7 +211,10 @@ double distance_to_component(const std::vector<Piece>& pieces, const Component& 
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t k : component.pieces)
     for (const Segment& s : pieces[k].segments)
-      if (hull_distance(s, q) < best) best = std::min(best, distance_to_segment(s, q));
+      if (hull_distance(s, q) < best) {
+        const double d = distance_to_segment(s, q);
+        if (d < best) best = d;  // (never NaN: a distance that overflowed is no nearer)
+      }
   return best;
 }
 
