@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <sstream>
 
@@ -250,13 +251,19 @@ std::vector<const RawEntity*> considered(const std::vector<const RawEntity*>& al
   std::vector<std::string> handles = sel.handles;
   if (!sel.handle.empty()) handles.push_back(sel.handle);
   if (!handles.empty()) {
+    std::map<std::string, const RawEntity*> by_handle;  // (handles are unique: check_unique_handles)
+    for (const RawEntity* e : all)
+      if (!e->handle.empty()) by_handle.emplace(upper(e->handle), e);
+    std::set<const RawEntity*> taken;
     for (const std::string& h : handles) {
-      const auto it = std::find_if(all.begin(), all.end(), [&](const RawEntity* e) { return upper(e->handle) == upper(h); });
-      if (it == all.end()) throw InputError(file, "", "no entity with handle " + h + " in the ENTITIES section");
-      if (never_a_curve((*it)->type))
-        throw InputError(file, "handle " + h, (*it)->label() + " is not a curve; a contour is made of " + std::string(kSupported));
-      if (std::find(chosen.begin(), chosen.end(), *it) == chosen.end()) chosen.push_back(*it);
+      const auto it = by_handle.find(upper(h));
+      if (it == by_handle.end()) throw InputError(file, "", "no entity with handle " + h + " in the ENTITIES section");
+      if (never_a_curve(it->second->type))
+        throw InputError(file, "handle " + h, it->second->label() + " is not a curve; a contour is made of " + std::string(kSupported));
+      if (taken.insert(it->second).second) chosen.push_back(it->second);
     }
+    // in file order, whatever the order of the list: a chain is walked alike however it is selected
+    std::sort(chosen.begin(), chosen.end(), [](const RawEntity* a, const RawEntity* b) { return a->line < b->line; });
     return chosen;
   }
   for (const RawEntity* e : all)

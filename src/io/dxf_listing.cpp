@@ -85,6 +85,13 @@ class LayerLister {
     size_ = pieces_size(pieces_, every);
     tol_ = kDxfJoinTolerance * size_;
     chains_ = connected_chains(pieces_, tol_);
+    for (const Component& c : chains_) {  // control-point boxes: a lower bound of a chain's distance
+      V lo = pieces_[c.pieces.front()].segments.front().points.front(), hi = lo;
+      for (std::size_t k : c.pieces)
+        for (const Segment& s : pieces_[k].segments)
+          for (const V& q : s.points) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+      boxes_.emplace_back(lo, hi);
+    }
     for (const Component& c : chains_) out.push_back(listed(c));
     for (const std::string& u : unreadable_) {
       ListedChain bad;
@@ -147,9 +154,13 @@ class LayerLister {
   /// Whether `at` picks component c among the layer's chains ("near" with "layer": the same pieces, tolerance
   /// and tie margin as the selection).
   bool nearest_alone(const Component& c, const V& at) const {
-    const double mine = distance_to_component(pieces_, c, at);
-    for (const Component& other : chains_)
-      if (&other != &c && distance_to_component(pieces_, other, at) - mine <= kDxfNearTie * size_) return false;
+    const double mine = distance_to_component(pieces_, c, at), margin = mine + kDxfNearTie * size_;
+    for (std::size_t i = 0; i < chains_.size(); ++i) {
+      const Component& other = chains_[i];
+      const V outside = (boxes_[i].first - at).cwiseMax(at - boxes_[i].second).cwiseMax(V(0, 0));
+      if (&other == &c || outside.norm() > margin) continue;  // farther than the margin: cannot tie
+      if (distance_to_component(pieces_, other, at) <= margin) return false;
+    }
     return true;
   }
 
@@ -175,6 +186,7 @@ class LayerLister {
   std::vector<Piece> pieces_;
   std::vector<std::string> unreadable_;
   std::vector<Component> chains_;
+  std::vector<std::pair<V, V>> boxes_;  // per chain: its control points' box
   double size_ = 0, tol_ = 0;
 };
 
