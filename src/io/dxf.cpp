@@ -1,7 +1,8 @@
 // DXF contour reader (io/dxf.hpp): libdxflib parses, a DL_CreationAdapter (dxf_collector.hpp) collects the
-// entities of the ENTITIES section; then the selected entities are converted to exact Bezier segments
-// (dxf_convert.cpp) and chained (dxf_chain.cpp). Here: the checks before libdxflib reads, the text helpers,
-// the selection, the units and the entry points.
+// entities of the ENTITIES and BLOCKS sections; then the considered entities are converted to exact Bezier
+// segments (dxf_convert.cpp), INSERTs placing their blocks' (Placer, "blocks" below), grouped into chains and
+// one chain picked and walked (dxf_chain.cpp). Here: the checks before libdxflib reads, the text helpers, the
+// selection, the units, the placement of blocks and the entry points.
 #include "dxf_collector.hpp"
 
 #include "rollkin/io/csv.hpp"

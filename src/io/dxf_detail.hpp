@@ -1,6 +1,7 @@
 // Internals of the DXF reader (io/dxf.hpp), shared by its parts: src/io/dxf.cpp (checks, selection, units,
-// the entry points), dxf_collector.hpp (what libdxflib delivers), dxf_convert.cpp (one entity to exact Bezier
-// segments) and dxf_chain.cpp (the entities chained end to end into one contour).
+// blocks, the entry points), dxf_collector.hpp (what libdxflib delivers), dxf_convert.cpp (one entity to exact
+// Bezier segments), dxf_chain.cpp (the pieces grouped into chains by their end points, one walked end to end)
+// and dxf_listing.cpp (every chain of a drawing, io/contour_listing.hpp).
 #pragma once
 
 #include "rollkin/io/dxf.hpp"
