@@ -133,6 +133,59 @@ BOOST_AUTO_TEST_CASE(two_bulge_disk_rolling_on_a_dxf_line_is_the_cycloid) {
   BOOST_TEST(worst < 1e-9 * kDeg);
 }
 
+// (a') The paper's parabola inside a block, placed by an INSERT rotated by 33 degrees and mirrored (x scale -1)
+// with a base point (blocks_mm.dxf: the block holds the parabola mapped back), selected by the INSERT's layer:
+// the paper's angles to 1e-9 deg, as (a).
+BOOST_AUTO_TEST_CASE(paper_parabola_inside_a_rotated_mirrored_insert_gives_the_papers_angles) {
+  const std::string analytic_text = read_text(kExamples + "paper_fourbar.json");
+  const double vertex = std::sqrt(5.0) + std::asinh(2.0) / 2;
+  std::string text = replaced(analytic_text,
+                              "\"type\": \"parabola\", \"a\": 0.5, \"x_range\": [-2, 2],",
+                              "\"type\": \"dxf\", \"file\": \"" + kDxf + "blocks_mm.dxf\", \"layer\": \"PARABOLA_INS\", "
+                              "\"parameter\": \"arc_length\",");
+  text = replaced(text, "\"material\": \"inside\"", "\"material\": \"left\"");
+  text = replaced(text, "\"values\": [0, 180]", "\"values\": [" + number(vertex) + ", 180]");
+  const io::Scene analytic = io::load_scene(kExamples + "paper_fourbar.json");
+  const io::Scene dxf = scene_from("paper_insert.json", text);
+  const auto ra = solved(analytic), rd = solved(dxf);
+  const double worst = worst_angle_difference(analytic, ra, dxf, rd, {"A.theta23", "B.theta34", "B.theta4", "O_B.theta5"});
+  BOOST_TEST_MESSAGE("paper parabola in a rotated, mirrored INSERT: worst angle difference " << worst / kDeg << " deg");
+  BOOST_TEST(worst < 1e-9 * kDeg);
+}
+
+// (b') The cycloid from one layer that holds everything (blocks_mm.dxf, layer 0): the rim of a wheel block
+// (two ARCs, radius 1000 mm, with a hub circle and centre marks beside it) inserted rotated and mirrored, and
+// the track LINE through it, each picked by "near" a point beside it. Closed form as (b): psi - psi_0 = -s / r.
+// The rim's chain starts at the first ARC's start, block angle 0, which the INSERT puts at 213 degrees, and
+// runs clockwise (mirrored); with its material inside it is taken the other way round from there, so the
+// bottom of the disk (the contact guess) is 57 degrees of arc (r = 1 m) along it.
+BOOST_AUTO_TEST_CASE(disk_and_track_picked_by_near_from_a_shared_layer_roll_as_the_cycloid) {
+  std::string text = read_text(kExamples + "cycloid.json");
+  text = replaced(text, "\"type\": \"line\", \"from\": -10, \"to\": 10,",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "blocks_mm.dxf\", \"layer\": \"0\", \"near\": [5000, 3], "
+                  "\"parameter\": \"arc_length\",");
+  text = replaced(text, "\"type\": \"circle\", \"radius\": 1}",
+                  "\"type\": \"dxf\", \"file\": \"" + kDxf + "blocks_mm.dxf\", \"layer\": \"0\", \"near\": [0, 1001], "
+                  "\"parameter\": \"arc_length\"}");
+  text = replaced(text, "\"values\": [-90, 0]", "\"values\": [" + number(57 * kDeg) + ", 10]");
+  const io::Scene s = scene_from("cycloid_near.json", text);
+  const auto r = solved(s);
+  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  BOOST_REQUIRE(travel >= 0 && turn >= 0);
+  BOOST_REQUIRE(r.poses.front().input == 0.0);
+  const double psi0 = r.poses.front().q(turn);
+  double worst = 0;
+  for (const auto& p : r.poses) worst = std::max(worst, std::abs((p.q(turn) - psi0) - (-p.q(travel) / 1.0)));
+  BOOST_TEST_MESSAGE("cycloid from a shared layer by near: worst |psi + s / r| " << worst << " rad");
+  BOOST_TEST(r.poses.size() == 21u);
+  BOOST_TEST(worst < 1e-9 * kDeg);
+  // without "near" the layer is refused, listing its chains (rim, hub, two centre marks, track)
+  const std::string whole = replaced(text, "\"near\": [0, 1001], ", "");
+  const std::string msg = input_error_of([&] { scene_from("cycloid_layer.json", whole); });
+  BOOST_TEST(contains(msg, "form 5 chains"));
+  BOOST_TEST(contains(msg, "in INSERT"));
+}
+
 // (c) The cycloid's disk drawn as an SVG <circle> inside nested transformed groups, in a mm document, for a
 // scene in cm: the same disk angles as the analytic scene (radius 1 cm) and the closed form.
 BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cycloid) {
@@ -390,16 +443,20 @@ BOOST_AUTO_TEST_CASE(dxf_selection_and_reader_errors_name_the_json_path) {
   const std::string file = "\"file\": \"" + kDxf + "scenes_mm.dxf\"";
   std::string msg = input_error_of([&] { scene_from("both.json", with("\"type\": \"dxf\", " + file + ", \"layer\": \"A\", \"handle\": \"2F\"}")); });
   BOOST_TEST(contains(msg, "links[2].contours[0].handle"));
-  BOOST_TEST(contains(msg, "not both"));
+  BOOST_TEST(contains(msg, "give one selector"));
   msg = input_error_of([&] { scene_from("none.json", with("\"type\": \"dxf\", " + file + "}")); });
-  BOOST_TEST(contains(msg, "\"layer\" or \"handle\""));
+  BOOST_TEST(contains(msg, "\"layer\", \"near\", \"handle\" or \"handles\""));
+  msg = input_error_of([&] { scene_from("near.json", with("\"type\": \"dxf\", " + file + ", \"near\": [1]}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].near"));
+  msg = input_error_of([&] { scene_from("handles.json", with("\"type\": \"dxf\", " + file + ", \"handles\": []}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].handles"));
   msg = input_error_of([&] { scene_from("nolayer.json", with("\"type\": \"dxf\", " + file + ", \"layer\": \"NO_SUCH\"}")); });
   BOOST_TEST_MESSAGE(msg);
   BOOST_TEST(contains(msg, "links[2].contours[0].file"));
   BOOST_TEST(contains(msg, "scenes_mm.dxf"));
   msg = input_error_of([&] { scene_from("gap.json", with("\"type\": \"dxf\", \"file\": \"" + kDxf + "errors.dxf\", \"layer\": \"GAP\"}")); });
   BOOST_TEST(contains(msg, "links[2].contours[0].file"));
-  BOOST_TEST(contains(msg, "gap"));
+  BOOST_TEST(contains(msg, "form 2 chains"));
 }
 
 BOOST_AUTO_TEST_CASE(invalid_nurbs_is_an_error_naming_the_json_path) {

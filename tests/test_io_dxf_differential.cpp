@@ -2,9 +2,13 @@
 // seeded drawings with python3-ezdxf (lines and arcs either way, partial ellipses, LWPOLYLINEs and 2D
 // POLYLINEs with bulges 0 and +-1e-18 .. 1e3, rational splines with random weights and knots, extrusion +Z
 // and -Z, 1 to 4 chains on their own layers, some a closed CIRCLE, ELLIPSE or LWPOLYLINE alone, scales 1e-2
-// .. 1e4) and prints ezdxf's own world-coordinate points on each entity. Every chain read by rollkin must
-//   - consist of the same entities in the same order,
-//   - start where ezdxf's first entity starts, within 1e-12 of the chain's size,
+// .. 1e4; a quarter of the chains in blocks placed by INSERTs with rotation, negative and non-uniform scale,
+// extrusion +-Z, some nested; ELLIPSEs with axis ratio > 1; MULTILEADERs, TEXT, VIEWPORTs, text after EOF;
+// modelspace entities in random order) and prints ezdxf's own world-coordinate points on each entity (through
+// INSERTs: mapped by ezdxf's Insert.matrix44()). Every chain read by rollkin must
+//   - consist of the same entities in the same order (the walk from the free end of the chain's entity first
+//     in the file),
+//   - start where the generator says, within 1e-12 of the chain's size,
 //   - pass within 1e-12 of the chain's size of every ezdxf point (to the segments of the entity the point
 //     belongs to),
 //   - have the length of ezdxf's points joined up, to 1e-2 (that polygon's chord error is below 1e-3): a
@@ -23,6 +27,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +48,7 @@ struct RefEntity {
 struct RefChain {
   std::string file, layer;
   std::vector<RefEntity> entities;
+  std::optional<V> start;  // where the chain starts, when not at its first entity's first point
 };
 
 int env_or(const char* name, int fallback) {
@@ -70,12 +76,14 @@ std::vector<RefChain> ezdxf_chains(const std::string& dir, int seed, int count) 
     if (key == "case") {
       s >> file;
     } else if (key == "layer") {
-      chains.push_back({file, "", {}});
+      chains.push_back({file, "", {}, std::nullopt});
       s >> chains.back().layer;
     } else if (key == "entity") {
-      std::string type, handle;
-      s >> type >> handle;
-      chains.back().entities.push_back({type + " " + handle, {}});
+      chains.back().entities.push_back({line.substr(7), {}});  // "TYPE HANDLE[ in INSERT H[ in INSERT H2]]"
+    } else if (key == "start") {
+      double x, y;
+      s >> x >> y;
+      chains.back().start = V(x, y);
     } else if (key == "p") {
       double x, y;
       s >> x >> y;
@@ -111,7 +119,7 @@ void compare(const RefChain& ref, Worst& worst) {
       }
     const double size = (hi - lo).norm();
     const BezierPath<double> path(c.segments, c.closed);
-    BOOST_TEST((c.segments.front().points.front() - ref.entities[0].points[0]).norm() <= 1e-12 * size);
+    BOOST_TEST((c.segments.front().points.front() - ref.start.value_or(ref.entities[0].points[0])).norm() <= 1e-12 * size);
     for (std::size_t k = 0; k < ref.entities.size(); ++k) {
       const RefEntity& e = ref.entities[k];
       BOOST_TEST(c.entities[k] == e.label);
@@ -143,12 +151,18 @@ BOOST_AUTO_TEST_CASE(random_ezdxf_drawings_read_as_ezdxf_draws_them) {
   const std::vector<RefChain> chains = ezdxf_chains(dir.string(), seed, count);
   std::map<std::string, int> types;
   Worst worst;
+  int placed = 0, backwards = 0;
   for (const RefChain& chain : chains) {
     compare(chain, worst);
-    for (const RefEntity& e : chain.entities) ++types[e.label.substr(0, e.label.find(' '))];
+    for (const RefEntity& e : chain.entities) {
+      ++types[e.label.substr(0, e.label.find(' '))];
+      placed += e.label.find(" in INSERT ") != std::string::npos;
+    }
+    backwards += chain.start.has_value();
   }
-  std::printf("%d drawings (seed %d), %zu chains:", count, seed, chains.size());
+  std::printf("%d drawings (seed %d), %zu chains (%d walked from their last entity in the file):", count, seed, chains.size(), backwards);
   for (const auto& [type, n] : types) std::printf(" %d %s", n, type.c_str());
+  std::printf(" (%d placed by INSERTs)", placed);
   std::printf("\nlargest distance of an ezdxf point / chain size %.2e (%s); largest length difference to ezdxf's polygon %.2e\n",
               worst.distance, worst.where.c_str(), worst.length);
   BOOST_TEST(chains.size() >= static_cast<std::size_t>(count));

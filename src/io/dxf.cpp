@@ -1,7 +1,8 @@
 // DXF contour reader (io/dxf.hpp): libdxflib parses, a DL_CreationAdapter (dxf_collector.hpp) collects the
-// entities of the ENTITIES section; then the selected entities are converted to exact Bezier segments
-// (dxf_convert.cpp) and chained (dxf_chain.cpp). Here: the checks before libdxflib reads, the text helpers,
-// the selection, the units and the entry points.
+// entities of the ENTITIES and BLOCKS sections; then the considered entities are converted to exact Bezier
+// segments (dxf_convert.cpp), INSERTs placing their blocks' (Placer, "blocks" below), grouped into chains and
+// one chain picked and walked (dxf_chain.cpp). Here: the checks before libdxflib reads, the text helpers, the
+// selection, the units, the placement of blocks and the entry points.
 #include "dxf_collector.hpp"
 
 #include "rollkin/io/csv.hpp"
@@ -20,6 +21,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <numeric>
+#include <set>
 #include <stdexcept>
 #include <sstream>
 
@@ -138,11 +141,15 @@ namespace {
 constexpr std::size_t kMaxLine = 1000;  // libdxflib reads lines of at most 1023 characters
 
 /// Checks what libdxflib relies on before it reads the text: not binary, lines short enough for its fixed
-/// buffer, every group code line an integer 0..1071. Returns the number of group pairs.
-std::size_t check_group_structure(const std::string& text, const std::string& file) {
+/// buffer, every group code line an integer 0..1071, up to group 0 EOF (what follows it is not DXF: CAD
+/// programs ignore it, and so does this reader). Returns the number of group pairs; `end` gets the offset just
+/// after the EOF group (the text's size without one).
+std::size_t check_group_structure(const std::string& text, const std::string& file, std::size_t& end) {
   if (text.compare(0, 18, "AutoCAD Binary DXF") == 0)
     throw InputError(file, "", "binary DXF is not supported; save the drawing as ASCII DXF");
   std::size_t line = 0, pos = 0, pairs = 0;
+  bool code_zero = false;
+  end = text.size();
   while (pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
@@ -160,6 +167,10 @@ std::size_t check_group_structure(const std::string& text, const std::string& fi
         throw InputError(file, "line " + std::to_string(line),
                          "expected a group code (an integer 0..1071), got \"" + trim(content).substr(0, 40) + "\"");
       if (!last_blank) ++pairs;
+      code_zero = code && *code == 0;
+    } else if (code_zero && trim(content) == "EOF") {
+      end = std::min(eol + 1, text.size());
+      return pairs;
     }
     pos = eol + 1;
   }
@@ -168,8 +179,8 @@ std::size_t check_group_structure(const std::string& text, const std::string& fi
 
 // ---- units and selection -------------------------------------------------------------------------------------
 
-void set_units(DxfContour& out, const Collector& collector, const std::string& file) {
-  out.insunits = collector.has_insunits ? collector.insunits : 0;
+void set_units(DxfContour& out, const Drawing& drawing, const std::string& file) {
+  out.insunits = drawing.has_insunits ? drawing.insunits : 0;
   switch (out.insunits) {
     case 0: out.unit = ""; out.metres_per_unit = 0; break;
     case 1: out.unit = "in"; out.metres_per_unit = 0.0254; break;
@@ -187,9 +198,10 @@ void set_units(DxfContour& out, const Collector& collector, const std::string& f
 /// A handle (group 5) names one entity of the drawing: two entities of the ENTITIES section with the same
 /// handle (compared case-insensitively, as selection compares them) make the file invalid, whichever layer
 /// either is on, since selecting by that handle would take both.
-void check_unique_handles(const std::vector<RawEntity>& all, const std::string& file) {
+void check_unique_handles(const std::vector<const RawEntity*>& all, const std::string& file) {
   std::map<std::string, const RawEntity*> first;
-  for (const RawEntity& e : all) {
+  for (const RawEntity* ep : all) {
+    const RawEntity& e = *ep;
     if (e.handle.empty()) continue;
     const auto [it, fresh] = first.emplace(upper(e.handle), &e);
     if (fresh) continue;
@@ -202,7 +214,7 @@ void check_unique_handles(const std::vector<RawEntity>& all, const std::string& 
   }
 }
 
-const char* kSupported = "LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, SPLINE";
+const char* kSupported = "LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, SPLINE (and INSERTs of blocks made of them)";
 
 bool supported(const std::string& type) {
   for (const char* t : {"LINE", "ARC", "CIRCLE", "ELLIPSE", "LWPOLYLINE", "POLYLINE", "SPLINE"})
@@ -210,50 +222,143 @@ bool supported(const std::string& type) {
   return false;
 }
 
-std::vector<const RawEntity*> select(const std::vector<RawEntity>& all, const DxfSelection& sel, const std::string& file) {
-  if (sel.layer.empty() == sel.handle.empty())
-    throw InputError(file, "", "select the contour by a layer name or by an entity handle (exactly one of the two)");
+/// Exactly one way of selecting (io/dxf.hpp, "Selection").
+void check_selection(const DxfSelection& sel, const std::string& file) {
+  const bool by_handle = !sel.handle.empty(), by_handles = !sel.handles.empty(), by_layer = !sel.layer.empty();
+  const int ways = int(by_handle) + int(by_handles) + int(by_layer || sel.near.has_value());
+  if (ways != 1)
+    throw InputError(file, "",
+                     "select the contour by a layer name (optionally with a point \"near\" it), by a point \"near\" it, "
+                     "by one entity handle or by a list of handles (exactly one of these)");
+  if (sel.near && !(std::isfinite(sel.near->x()) && std::isfinite(sel.near->y())))
+    throw InputError(file, "", "the point \"near\" must be finite");
+}
+
+std::string selection_text(const DxfSelection& sel) {
+  if (!sel.handle.empty()) return "handle " + sel.handle;
+  if (!sel.handles.empty()) {
+    std::string s = "handles ";
+    for (std::size_t i = 0; i < sel.handles.size(); ++i) s += (i ? ", " : "") + sel.handles[i];
+    return s;
+  }
+  std::string s = sel.layer.empty() ? std::string("all layers") : "layer \"" + sel.layer + "\"";
+  if (sel.near) s += ", near " + point_text(*sel.near);
+  return s;
+}
+
+/// The entities of the ENTITIES section the selection considers.
+std::vector<const RawEntity*> considered(const std::vector<const RawEntity*>& all, const DxfSelection& sel, const std::string& file) {
   std::vector<const RawEntity*> chosen;
-  for (const RawEntity& e : all)
-    if (sel.layer.empty() ? upper(e.handle) == upper(sel.handle) : upper(e.layer) == upper(sel.layer)) chosen.push_back(&e);
+  std::vector<std::string> handles = sel.handles;
+  if (!sel.handle.empty()) handles.push_back(sel.handle);
+  if (!handles.empty()) {
+    std::map<std::string, const RawEntity*> by_handle;  // (handles are unique: check_unique_handles)
+    for (const RawEntity* e : all)
+      if (!e->handle.empty()) by_handle.emplace(upper(e->handle), e);
+    std::set<const RawEntity*> taken;
+    for (const std::string& h : handles) {
+      const auto it = by_handle.find(upper(h));
+      if (it == by_handle.end()) throw InputError(file, "", "no entity with handle " + h + " in the ENTITIES section");
+      if (never_a_curve(it->second->type))
+        throw InputError(file, "handle " + h, it->second->label() + " is not a curve; a contour is made of " + std::string(kSupported));
+      if (taken.insert(it->second).second) chosen.push_back(it->second);
+    }
+    // in file order, whatever the order of the list: a chain is walked alike however it is selected
+    std::sort(chosen.begin(), chosen.end(), [](const RawEntity* a, const RawEntity* b) { return a->line < b->line; });
+    return chosen;
+  }
+  for (const RawEntity* e : all)
+    if (sel.layer.empty() || upper(e->layer) == upper(sel.layer)) chosen.push_back(e);
   if (chosen.empty()) {
     std::vector<std::string> layers;
-    for (const RawEntity& e : all)
-      if (std::find(layers.begin(), layers.end(), e.layer) == layers.end()) layers.push_back(e.layer);
+    for (const RawEntity* e : all)
+      if (std::find(layers.begin(), layers.end(), e->layer) == layers.end()) layers.push_back(e->layer);
     std::string known;
     for (std::size_t i = 0; i < layers.size() && i < 20; ++i) known += (i ? ", \"" : "\"") + layers[i] + "\"";
     throw InputError(file, "",
-                     sel.layer.empty() ? "no entity with handle " + sel.handle + " in the ENTITIES section"
+                     sel.layer.empty() ? "no entity in the ENTITIES section"
                                        : "no entity on layer \"" + sel.layer + "\" in the ENTITIES section (layers with entities: " +
                                              (known.empty() ? "none" : known) + ")");
   }
+  return chosen;
+}
+
+/// The pieces of the considered entities; zero-length LINEs are dropped (noted) unless they are all there is.
+std::vector<Piece> pieces_of(const Drawing& drawing, const std::vector<const RawEntity*>& chosen, const DxfSelection& sel,
+                             const std::string& file, std::vector<std::string>& notes) {
   std::string unsupported;
   for (const RawEntity* e : chosen)
-    if (!supported(e->type) || !e->delivered)
+    if (e->type != "INSERT" && !never_a_curve(e->type) && (!supported(e->type) || !e->delivered))
       unsupported += (unsupported.empty() ? "" : ", ") + e->label() + " (line " + std::to_string(e->line) + ")";
   if (!unsupported.empty())
-    throw InputError(file, sel.layer.empty() ? "handle " + sel.handle : "layer \"" + sel.layer + "\"",
+    throw InputError(file, selection_text(sel),
                      "unsupported entities: " + unsupported + "; a contour is made of " + kSupported +
-                         " (explode blocks, and move text, hatches and dimensions to another layer)");
-  return chosen;
+                         " (move the others to another layer, or select the contour with \"near\" on a layer without them "
+                         "or with \"handles\")");
+  Placer placer(drawing, file);
+  std::vector<Piece> all;
+  for (const RawEntity* e : chosen) placer.place(*e, all);
+  std::vector<Piece> kept;
+  for (Piece& p : all) {
+    if (!p.zero_length) kept.push_back(std::move(p));
+    else notes.push_back(p.label + " has zero length: dropped");
+  }
+  if (kept.empty()) {
+    if (!all.empty()) throw InputError(file, selection_text(sel), all.front().label + " has zero length");
+    throw InputError(file, selection_text(sel), "no curve entities selected (only text, dimensions and the like); a contour is made of " +
+                                                    std::string(kSupported));
+  }
+  return kept;
+}
+
+/// The chains, one a line, each with a point on it (for "near") and its entities.
+std::string chains_text(const std::vector<Piece>& pieces, const std::vector<Component>& chains, std::size_t limit = 12) {
+  std::string s;
+  for (std::size_t i = 0; i < chains.size() && i < limit; ++i)
+    s += "\n  chain " + std::to_string(i + 1) + ": through " + point_text(point_on_component(pieces, chains[i])) + ": " +
+         component_entities(pieces, chains[i]);
+  if (chains.size() > limit) s += "\n  ... (" + std::to_string(chains.size()) + " chains)";
+  return s;
+}
+
+/// The component the selection names: the only one, or the one nearest to `near`.
+std::size_t pick_chain(const std::vector<Piece>& pieces, const std::vector<Component>& chains, const DxfSelection& sel,
+                       double size, const std::string& file) {
+  if (sel.near) {
+    std::vector<std::pair<double, std::size_t>> d;
+    for (std::size_t i = 0; i < chains.size(); ++i) d.emplace_back(distance_to_component(pieces, chains[i], *sel.near), i);
+    std::sort(d.begin(), d.end());
+    if (d.size() > 1 && d[1].first - d[0].first <= kDxfNearTie * size)
+      throw InputError(file, selection_text(sel),
+                       "two chains pass about equally near " + point_text(*sel.near) + " (distances " + number(d[0].first) +
+                           " and " + number(d[1].first) + ", within " + number(kDxfNearTie) + " x the drawing size " +
+                           number(size) + "): " + component_entities(pieces, chains[d[0].second]) + ", and " +
+                           component_entities(pieces, chains[d[1].second]) +
+                           "; give a point nearer to the one you mean (a point on it), or its \"handles\"");
+    return d[0].second;
+  }
+  if (chains.size() > 1) {
+    const std::string what = sel.handle.empty() && sel.handles.empty() ? "the entities on " + selection_text(sel) : "the entities of " + selection_text(sel);
+    throw InputError(file, selection_text(sel),
+                     what + " form " + std::to_string(chains.size()) + " chains, not one:" + chains_text(pieces, chains) +
+                         "\nselect one with \"near\": [x, y] (a point on or near it, drawing units) or \"handles\": [...], "
+                         "or list them with `rollkin contours " + (file.empty() ? std::string("FILE") : file) + "`");
+  }
+  return 0;
 }
 
 std::string describe(const DxfContour& out, const DxfSelection& sel, const std::string& file) {
   std::ostringstream os;
-  os << "DXF " << (file.empty() ? std::string("<text>") : file) << " "
-     << (sel.layer.empty() ? "handle " + sel.handle : "layer \"" + sel.layer + "\"") << ": " << out.entities.size()
+  os << "DXF " << (file.empty() ? std::string("<text>") : file) << " " << selection_text(sel) << ": " << out.entities.size()
      << (out.entities.size() == 1 ? " entity (" : " entities (");
   for (std::size_t i = 0; i < out.entities.size() && i < 4; ++i) os << (i ? ", " : "") << out.entities[i];
   if (out.entities.size() > 4) os << ", ...";
   os << "), " << out.segments.size() << " segments, " << (out.closed ? "closed" : "open") << ", " << out.corners.size()
      << (out.corners.size() == 1 ? " corner, " : " corners, ")
      << (out.unit.empty() ? std::string("unitless") : "unit " + out.unit + " (" + number(out.metres_per_unit) + " m)");
+  for (const std::string& n : out.notes) os << "; " << n;
   return os.str();
 }
-
-}  // namespace
-
-namespace {
 
 /// A private temporary copy of a text, removed when it goes out of scope.
 class TempFile {
@@ -310,33 +415,25 @@ void check_groups_before_reading(const std::string& text, Collector& dry) {
   dry.text_ended(line, -1);
 }
 
-/// `text` is the content of the file at `disk_path`, which libdxflib reads (its FILE* reader is the one that
-/// calls processCodeValuePair; its istream reader, in libdxflib 3.26, does not).
+/// The selected chain as a DxfContour.
 DxfContour contour_from(const std::string& text, const std::string& disk_path, const DxfSelection& selection,
                         const std::string& file) {
-  const std::size_t pairs = check_group_structure(text, file);
-  {
-    Collector dry(file, pairs);
-    check_groups_before_reading(text, dry);
-  }
-  Collector collector(file, pairs);
-  {
-    DL_Dxf reader;
-    if (!reader.in(disk_path, &collector)) throw InputError(file, "", "libdxflib could not open the DXF file");
-  }
+  const Drawing drawing = read_drawing(text, disk_path, file);
   DxfContour out;
-  set_units(out, collector, file);
-  check_unique_handles(collector.entities, file);
-  const std::vector<const RawEntity*> chosen = select(collector.entities, selection, file);
-
-  std::vector<Piece> pieces;
-  for (const RawEntity* e : chosen) pieces.push_back(convert_entity(*e, file));
-  double size = 0;
-  Chain chain = chain_pieces(file, pieces, size);
+  set_units(out, drawing, file);
+  check_selection(selection, file);
+  const std::vector<const RawEntity*> top = drawing.top_level();
+  check_unique_handles(top, file);
+  const std::vector<Piece> pieces = pieces_of(drawing, considered(top, selection, file), selection, file, out.notes);
+  std::vector<std::size_t> every(pieces.size());
+  std::iota(every.begin(), every.end(), 0);
+  const double size = pieces_size(pieces, every), tol = kDxfJoinTolerance * size;
+  const std::vector<Component> chains = connected_chains(pieces, tol);
+  const Component& picked = chains[pick_chain(pieces, chains, selection, size, file)];
+  Chain chain = walk_chain(file, pieces, picked, tol, size);
   out.segments = std::move(chain.segments);
   out.closed = chain.closed;
-  for (std::size_t i = 0; i < chain.owner.size(); ++i)
-    if (i == 0 || chain.owner[i] != chain.owner[i - 1]) out.entities.push_back(pieces[chain.owner[i]].label);
+  for (std::size_t k : chain.pieces) out.entities.push_back(pieces[k].label);
 
   const std::size_t n = out.segments.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -344,17 +441,192 @@ DxfContour contour_from(const std::string& text, const std::string& disk_path, c
     out.joint_entities.push_back(before == after ? pieces[after].label : pieces[before].label + " / " + pieces[after].label);
   }
   const BezierPathOptions<double> options;
-  for (const PathCorner<double>& k : path_corners(out.segments, out.closed, options.joint_tolerance * size, options.corner_tolerance))
+  const double chain_size = pieces_size(pieces, picked.pieces);
+  for (const PathCorner<double>& k : path_corners(out.segments, out.closed, options.joint_tolerance * chain_size, options.corner_tolerance))
     out.corners.push_back({out.joint_entities[k.piece], k.piece, k.point, rad_to_deg(k.turn)});
   out.description = describe(out, selection, file);
   return out;
 }
 
+// ---- blocks ------------------------------------------------------------------------------------------------
+
+/// cos and sin of an angle in degrees, exact at multiples of 90 degrees.
+std::pair<double, double> cos_sin_degrees(double degrees) {
+  const double turns = degrees / 90;
+  if (turns == std::floor(turns) && std::abs(turns) < 1e15) {
+    switch (((static_cast<long long>(turns) % 4) + 4) % 4) {
+      case 0: return {1, 0};
+      case 1: return {0, 1};
+      case 2: return {-1, 0};
+      default: return {0, -1};
+    }
+  }
+  return {std::cos(deg_to_rad(degrees)), std::sin(deg_to_rad(degrees))};
+}
+
 }  // namespace
 
+namespace dxf {
+
+void check_drawing(const Drawing& drawing, const std::string& file) {
+  DxfContour units;
+  set_units(units, drawing, file);
+  check_unique_handles(drawing.top_level(), file);
+}
+
+bool never_a_curve(const std::string& type) {
+  for (const char* t : {"TEXT", "MTEXT", "ATTDEF", "ATTRIB", "DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "HATCH",
+                        "MPOLYGON", "POINT", "VIEWPORT", "MULTILEADER", "MLEADER", "LEADER", "TOLERANCE", "IMAGE", "WIPEOUT",
+                        "OLEFRAME", "OLE2FRAME", "ACAD_TABLE", "TABLE", "RAY", "XLINE", "SHAPE", "UNDERLAY", "PDFUNDERLAY",
+                        "DWFUNDERLAY", "DGNUNDERLAY", "LIGHT", "SUN", "SECTION", "GEOPOSITIONMARKER"})
+    if (type == t) return true;
+  return false;
+}
+
+std::vector<const RawEntity*> Drawing::top_level() const {
+  std::vector<const RawEntity*> out;
+  for (const RawEntity& e : entities)
+    if (e.block.empty() && e.type != "BLOCK" && e.type != "ENDBLK") out.push_back(&e);
+  return out;
+}
+
+Drawing read_drawing(const std::string& text, const std::string& disk_path, const std::string& file) {
+  std::size_t end = 0;
+  const std::size_t pairs = check_group_structure(text, file, end);
+  {
+    Collector dry(file, pairs);
+    check_groups_before_reading(text, dry);
+  }
+  Collector collector(file, pairs);
+  {
+    // libdxflib reads to the end of the file, EOF or not: it is given the text up to group 0 EOF.
+    std::optional<TempFile> copy;
+    if (disk_path.empty() || end < text.size()) copy.emplace(text.substr(0, end));
+    DL_Dxf reader;
+    if (!reader.in(copy ? copy->path() : disk_path, &collector)) throw InputError(file, "", "libdxflib could not open the DXF file");
+  }
+  Drawing d;
+  d.entities = std::move(collector.entities);
+  d.has_insunits = collector.has_insunits;
+  d.insunits = collector.insunits;
+  return d;
+}
+
+Placer::Placer(const Drawing& drawing, std::string file) : file_(std::move(file)) {
+  Block* current = nullptr;
+  for (const RawEntity& e : drawing.entities) {
+    if (e.type == "BLOCK") {
+      Block& b = blocks_[upper(e.name)];
+      b = Block{e.name, V(e.v[0], e.v[1]), {}};
+      current = &b;
+    } else if (e.type == "ENDBLK") {
+      current = nullptr;
+    } else if (!e.block.empty() && current) {
+      current->entities.push_back(&e);
+    }
+  }
+}
+
+void Placer::fail(const RawEntity& e, const std::string& what) const {
+  throw InputError(file_, "line " + std::to_string(e.line), e.label() + " " + what);
+}
+
+void Placer::place(const RawEntity& top, std::vector<Piece>& out) {
+  std::vector<std::string> stack;
+  place_in(top, Affine{}, "", stack, top, out);
+}
+
+void Placer::place_in(const RawEntity& e, const Affine& m, const std::string& suffix, std::vector<std::string>& stack,
+                      const RawEntity& top, std::vector<Piece>& out) {
+  if (never_a_curve(e.type)) return;
+  if (++placed_ > kDxfMaxPlacedEntities)
+    fail(top, "places more than " + std::to_string(kDxfMaxPlacedEntities) + " entities (nested blocks and MINSERT arrays); "
+              "a contour is one chain: explode the blocks it is not in");
+  if (e.type == "INSERT") return place_insert(e, m, suffix, stack, top, out);
+  if (!supported(e.type) || !e.delivered)
+    throw InputError(file_, "line " + std::to_string(e.line),
+                     e.label() + suffix + " is not supported; a contour is made of " + std::string(kSupported));
+  Piece p;
+  try {
+    p = convert_entity(e, file_);
+  } catch (const InputError& ex) {
+    if (suffix.empty()) throw;
+    throw InputError(file_, "line " + std::to_string(e.line), std::string(ex.what()) + " (placed" + suffix + ")");
+  }
+  p.label += suffix;
+  p.layer = top.layer;
+  p.handle = top.handle;
+  if (!m.identity())
+    for (Segment& s : p.segments)
+      for (V& q : s.points) q = m(q);
+  for (const Segment& s : p.segments)
+    for (const V& q : s.points)
+      if (!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        throw InputError(file_, "line " + std::to_string(e.line),
+                         p.label + " reaches beyond the range of double precision (" + exact_number(q.x()) + ", " +
+                             exact_number(q.y()) + "); check its coordinates and the scales of the INSERTs placing it");
+  out.push_back(std::move(p));
+}
+
+// An INSERT places its block (ezdxf's Insert.matrix44 and multi_insert, the DXF reference's INSERT): block
+// coordinates q -> OCS(ip + offset + R(angle) diag(sx, sy) (q - base)), offset = R(angle) (column c x column
+// spacing, row r x row spacing) for the MINSERT's columns and rows (spacing not scaled; a spacing of 0 places
+// one copy in that direction), OCS the arbitrary axis algorithm of its extrusion (+Z: identity, -Z: x -> -x).
+void Placer::place_insert(const RawEntity& e, const Affine& m, const std::string& suffix, std::vector<std::string>& stack,
+                          const RawEntity& top, std::vector<Piece>& out) {
+  if (!e.defect.empty()) throw InputError(file_, e.defect_where, e.label() + suffix + ": " + e.defect);
+  auto fail = [&](const RawEntity& x, const std::string& what) {
+    throw InputError(file_, "line " + std::to_string(x.line), x.label() + suffix + " " + what);
+  };
+  const auto& n = e.extrusion;
+  if (!(n[2] != 0 && std::hypot(n[0], n[1]) <= 1e-12 * std::abs(n[2])))
+    fail(e, "has extrusion direction (" + exact_number(n[0]) + ", " + exact_number(n[1]) + ", " + exact_number(n[2]) +
+                "): only blocks placed in the XY plane are read, extrusion (0, 0, 1) or (0, 0, -1)");
+  const auto it = blocks_.find(upper(e.name));
+  if (it == blocks_.end()) fail(e, "inserts block \"" + e.name + "\", which the BLOCKS section does not define");
+  const Block& block = it->second;
+  if (std::find(stack.begin(), stack.end(), upper(e.name)) != stack.end()) {
+    std::string path;
+    for (const std::string& b : stack) path += b + " -> ";
+    fail(e, "inserts block \"" + e.name + "\" into itself (" + path + upper(e.name) + "); a block cannot contain itself");
+  }
+  if (static_cast<int>(stack.size()) >= kDxfMaxInsertDepth)
+    fail(e, "is nested " + std::to_string(stack.size() + 1) + " INSERTs deep; at most " + std::to_string(kDxfMaxInsertDepth) + " are read");
+  const double ipx = e.v[0], ipy = e.v[1], sx = e.v[2], sy = e.v[3], angle = e.v[4], cols = e.v[5], rows = e.v[6];
+  const double col_spacing = e.v[7], row_spacing = e.v[8];
+  for (double x : {ipx, ipy, sx, sy, angle, col_spacing, row_spacing})
+    if (!std::isfinite(x)) fail(e, "has a value that is not finite");
+  if (sx == 0 || sy == 0) fail(e, "has scale (" + exact_number(sx) + ", " + exact_number(sy) + "): a zero scale flattens the block");
+  if (cols < 1 || rows < 1) fail(e, "has " + number(cols) + " columns and " + number(rows) + " rows; each must be at least 1");
+  const auto [c, s] = cos_sin_degrees(angle);
+  const double mirror = n[2] < 0 ? -1 : 1;
+  const long columns = col_spacing == 0 ? 1 : static_cast<long>(cols), lines = row_spacing == 0 ? 1 : static_cast<long>(rows);
+  placed_ += static_cast<std::size_t>(columns) * static_cast<std::size_t>(lines);  // copies, even of an empty block
+  if (placed_ > kDxfMaxPlacedEntities)
+    fail(e, "places more than " + std::to_string(kDxfMaxPlacedEntities) + " entities and copies (nested blocks and "
+              "MINSERT arrays, " + std::to_string(columns) + " x " + std::to_string(lines) + " here); a contour is one "
+              "chain: explode the blocks it is not in");
+  stack.push_back(upper(e.name));
+  for (long r = 0; r < lines; ++r)
+    for (long k = 0; k < columns; ++k) {
+      const double ox = k * col_spacing, oy = r * row_spacing;
+      const V at(ipx + c * ox - s * oy, ipy + s * ox + c * oy);  // OCS
+      Affine place;  // q -> at + R S (q - base), then the OCS
+      place.a = c * sx, place.b = -s * sy, place.c = s * sx, place.d = c * sy;
+      place.t = at - V(place.a * block.base.x() + place.b * block.base.y(), place.c * block.base.x() + place.d * block.base.y());
+      place.a *= mirror, place.b *= mirror, place.t.x() *= mirror;
+      const std::string here = " in " + e.label() +
+                               (columns * lines > 1 ? " (column " + std::to_string(k) + ", row " + std::to_string(r) + ")" : "") + suffix;
+      const Affine total = m.after(place);
+      for (const RawEntity* child : block.entities) place_in(*child, total, here, stack, top, out);
+    }
+  stack.pop_back();
+}
+
+}  // namespace dxf
+
 DxfContour parse_dxf_contour(const std::string& dxf, const DxfSelection& selection, const std::string& file) {
-  const TempFile copy(dxf);
-  return contour_from(dxf, copy.path(), selection, file);
+  return contour_from(dxf, "", selection, file);
 }
 
 DxfContour read_dxf_contour(const std::string& path, const DxfSelection& selection) {

@@ -1,136 +1,233 @@
-// The selected DXF entities chained end to end into one contour (dxf_detail.hpp).
+// The DXF entities grouped into chains by their end points and walked end to end (dxf_detail.hpp), and the
+// distance from a point to a chain (the "near" selector).
+//
+// Order-free chaining: every piece (one entity, or a block's entity placed by an INSERT) has two ends; ends
+// within the join tolerance of each other are one node (union-find over the ends sorted by x, so that only
+// ends within the tolerance in x are compared). Pieces sharing a node are one component. A node where three
+// or more piece ends meet is a branch. A component without branches is a path (two nodes with one end) or a
+// cycle (every node with two ends), walked from one end.
 #include "dxf_detail.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
 #include <string>
 #include <vector>
 
 namespace rollkin::dxf {
 namespace {
 
-// ---- chaining ------------------------------------------------------------------------------------------------
+V start_of(const Piece& p) { return p.segments.front().points.front(); }
+V end_of(const Piece& p) { return p.segments.back().points.back(); }
 
-
-
-class Chainer {
- public:
-  Chainer(std::string file, const std::vector<Piece>& pieces) : file_(std::move(file)), pieces_(pieces) {
-    V lo = pieces[0].segments[0].points[0], hi = lo;
-    for (const Piece& p : pieces)
-      for (const Segment& s : p.segments)
-        for (const V& q : s.points) {
-          lo = lo.cwiseMin(q);
-          hi = hi.cwiseMax(q);
-        }
-    size_ = (hi - lo).norm();
-    tol_ = kDxfJoinTolerance * size_;
-    for (const Piece& p : pieces)
-      for (const Segment& s : p.segments) {
-        double reach = 0;
-        for (const V& q : s.points) reach = std::max(reach, (q - s.points.front()).norm());
-        if (!(reach > tol_))
-          fail(p.label + " has a piece at " + point_text(s.points.front()) + " no longer than the join tolerance (" +
-               tolerance_text() + "): nearly repeated vertices or a vanishing arc");
-      }
+struct UnionFind {
+  std::vector<std::size_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
   }
+  void join(std::size_t a, std::size_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
 
-  double size() const { return size_; }
+/// Node of every piece end (end 2 k is piece k's start, 2 k + 1 its end): ends within `tol` are one node.
+std::vector<std::size_t> end_nodes(const std::vector<Piece>& pieces, double tol) {
+  const std::size_t n = 2 * pieces.size();
+  std::vector<V> at(n);
+  for (std::size_t k = 0; k < pieces.size(); ++k) at[2 * k] = start_of(pieces[k]), at[2 * k + 1] = end_of(pieces[k]);
+  std::vector<std::size_t> by_x(n);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return at[a].x() < at[b].x(); });
+  UnionFind uf(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n && at[by_x[j]].x() - at[by_x[i]].x() <= tol; ++j)
+      if ((at[by_x[j]] - at[by_x[i]]).norm() <= tol) uf.join(by_x[i], by_x[j]);
+  std::vector<std::size_t> node(n);
+  for (std::size_t i = 0; i < n; ++i) node[i] = uf.find(i);
+  return node;
+}
 
-  Chain chain() {
-    Chain c;
-    for (std::size_t k = 0; k < pieces_.size(); ++k) {
-      const Piece& p = pieces_[k];
-      if (p.closed && pieces_.size() > 1)
-        fail(p.label + " is closed on its own but is not the only entity selected (" + std::to_string(pieces_.size()) +
-             " are); a contour is one chain: select it alone (by handle) or move the others to another layer");
-      const V s = p.segments.front().points.front(), e = p.segments.back().points.back();
-      if (k == 0) {
-        append(c, k, false);
-        joints_.push_back({s, "the chain's start (the start of " + p.label + ")"});
+/// Point on a rational Bezier segment at t (de Casteljau in homogeneous coordinates).
+V point_at(const Segment& s, double t) {
+  std::vector<V> p(s.points.size());
+  std::vector<double> w(s.points.size());
+  for (std::size_t i = 0; i < p.size(); ++i) w[i] = s.weight(i), p[i] = s.points[i] * w[i];
+  for (std::size_t r = 1; r < p.size(); ++r)
+    for (std::size_t i = 0; i + r < p.size(); ++i) {
+      p[i] = (1 - t) * p[i] + t * p[i + 1];
+      w[i] = (1 - t) * w[i] + t * w[i + 1];
+    }
+  return p[0] / w[0];
+}
+
+/// Distance from q to one segment: 64 samples, then golden section around every sample nearer than its
+/// neighbours (the squared distance is smooth; at a minimum its error is the square of the parameter's).
+double distance_to_segment(const Segment& s, const V& q) {
+  constexpr int kSamples = 64;
+  std::vector<double> d(kSamples + 1);
+  for (int k = 0; k <= kSamples; ++k) d[k] = (point_at(s, double(k) / kSamples) - q).norm();
+  double best = *std::min_element(d.begin(), d.end());
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  for (int k = 0; k <= kSamples; ++k) {
+    if ((k > 0 && d[k - 1] < d[k]) || (k < kSamples && d[k + 1] < d[k])) continue;
+    double a = double(std::max(0, k - 1)) / kSamples, b = double(std::min(kSamples, k + 1)) / kSamples;
+    double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+    double f1 = (point_at(s, x1) - q).norm(), f2 = (point_at(s, x2) - q).norm();
+    for (int it = 0; it < 80 && b - a > 1e-17; ++it) {
+      if (f1 < f2) {
+        b = x2, x2 = x1, f2 = f1, x1 = b - golden * (b - a), f1 = (point_at(s, x1) - q).norm();
       } else {
-        const V end = c.segments.back().points.back();
-        if (c.closed) leftover(c, k);
-        if ((s - end).norm() <= tol_) append(c, k, false);
-        else if ((e - end).norm() <= tol_) append(c, k, true);
-        else not_at_end(c, k, end);
-      }
-      const V end = c.segments.back().points.back();
-      const V start = c.segments.front().points.front();
-      if ((end - start).norm() <= tol_) {
-        c.segments.back().points.back() = start;
-        c.closed = true;
+        a = x1, x1 = x2, f1 = f2, x2 = a + golden * (b - a), f2 = (point_at(s, x2) - q).norm();
       }
     }
-    if (pieces_.size() == 1 && pieces_[0].closed && !c.closed)
-      fail(pieces_[0].label + " is flagged closed but ends at " + point_text(c.segments.back().points.back()) +
-           ", not at its start " + point_text(c.segments.front().points.front()) +
-           " (for a periodic SPLINE, rollkin needs the wrapped control points)");
-    return c;
+    best = std::min({best, f1, f2});
   }
+  return best;
+}
 
- private:
-  struct Joint {
-    V point;
-    std::string what;
-  };
+/// Lower bound of the distance from q to a segment: to the bounding box of its control points (which holds
+/// the curve, weights being positive).
+double hull_distance(const Segment& s, const V& q) {
+  V lo = s.points[0], hi = lo;
+  for (const V& p : s.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const V outside = (lo - q).cwiseMax(q - hi).cwiseMax(V(0, 0));
+  return outside.norm();
+}
 
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, "", message); }
+std::string tolerance_text(double tol, double size) {
+  return "tolerance " + number(tol) + " = " + number(kDxfJoinTolerance) + " x drawing size " + number(size);
+}
 
-  std::string tolerance_text() const {
-    return "tolerance " + number(tol_) + " = " + number(kDxfJoinTolerance) + " x drawing size " + number(size_);
+}  // namespace
+
+double pieces_size(const std::vector<Piece>& pieces, const std::vector<std::size_t>& which) {
+  bool any = false;
+  V lo(0, 0), hi(0, 0);
+  for (std::size_t k : which)
+    for (const Segment& s : pieces[k].segments)
+      for (const V& q : s.points) {
+        if (!any) lo = hi = q, any = true;
+        lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+      }
+  return (hi - lo).norm();
+}
+
+std::vector<Component> connected_chains(const std::vector<Piece>& pieces, double tol) {
+  const std::vector<std::size_t> node = end_nodes(pieces, tol);
+  UnionFind uf(pieces.size());
+  std::map<std::size_t, std::vector<std::size_t>> ends_at;  // node -> piece ends
+  for (std::size_t e = 0; e < node.size(); ++e) ends_at[node[e]].push_back(e);
+  for (const auto& [n, ends] : ends_at)
+    for (std::size_t e : ends) uf.join(ends.front() / 2, e / 2);
+  std::map<std::size_t, std::size_t> index;  // root piece -> component
+  std::vector<Component> out;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const auto [it, fresh] = index.emplace(uf.find(k), out.size());
+    if (fresh) out.emplace_back();
+    out[it->second].pieces.push_back(k);
   }
+  for (const auto& [n, ends] : ends_at) {
+    if (ends.size() <= 2) continue;
+    Component& c = out[index[uf.find(ends.front() / 2)]];
+    if (!c.branch.empty()) continue;
+    std::string names;
+    for (std::size_t i = 0; i < ends.size(); ++i)
+      names += (i ? (i + 1 == ends.size() ? " and " : ", ") : "") + pieces[ends[i] / 2].label + (ends[i] % 2 ? " (end)" : " (start)");
+    const V at = ends.front() % 2 ? end_of(pieces[ends.front() / 2]) : start_of(pieces[ends.front() / 2]);
+    c.branch = std::to_string(ends.size()) + " entity ends meet at " + point_text(at) + ": " + names;
+  }
+  return out;
+}
 
-  void append(Chain& c, std::size_t k, bool reverse) {
-    const Piece& p = pieces_[k];
+Chain walk_chain(const std::string& file, const std::vector<Piece>& pieces, const Component& component, double tol,
+                 double size) {
+  auto fail = [&](const std::string& message) -> void { throw InputError(file, "", message); };
+  if (!component.branch.empty())
+    fail("the chain of " + component_entities(pieces, component) + " branches: " + component.branch +
+         "; a contour is one chain without branches (select part of it with \"handles\", or move the other entities "
+         "to another layer)");
+  for (std::size_t k : component.pieces)
+    for (const Segment& s : pieces[k].segments) {
+      double reach = 0;
+      for (const V& q : s.points) reach = std::max(reach, (q - s.points.front()).norm());
+      if (!(reach > tol))
+        fail(pieces[k].label + " has a piece at " + point_text(s.points.front()) + " no longer than the join tolerance (" +
+             tolerance_text(tol, size) + "): nearly repeated vertices or a vanishing arc");
+    }
+  // ends of the component's pieces, by node
+  std::vector<Piece> local;
+  for (std::size_t k : component.pieces) local.push_back(pieces[k]);
+  const std::vector<std::size_t> node = end_nodes(local, tol);
+  std::map<std::size_t, std::vector<std::size_t>> ends_at;
+  for (std::size_t e = 0; e < node.size(); ++e) ends_at[node[e]].push_back(e);
+  // start: the free end (a node of one end) whose piece comes first in file order, else the first piece's start
+  std::size_t first_end = 0;
+  bool open = false;
+  for (std::size_t e = 0; e < node.size() && !open; ++e)
+    if (ends_at[node[e]].size() == 1) first_end = e, open = true;
+  Chain c;
+  std::vector<bool> used(local.size(), false);
+  std::size_t end = first_end;  // the end at which the next piece is entered
+  for (std::size_t step = 0; step < local.size(); ++step) {
+    const std::size_t k = end / 2;
+    const bool reverse = end % 2 == 1;
+    used[k] = true;
+    const Piece& p = local[k];
     const std::size_t first = c.segments.size();
     if (!reverse) {
       for (const Segment& s : p.segments) c.segments.push_back(s);
     } else {
       for (auto it = p.segments.rbegin(); it != p.segments.rend(); ++it) c.segments.push_back(reversed(*it));
     }
-    c.owner.resize(c.segments.size(), k);
-    if (first > 0) {
-      c.segments[first].points.front() = c.segments[first - 1].points.back();  // snap the joint
-      joints_.push_back({c.segments[first].points.front(), "where " + pieces_[c.owner[first - 1]].label + " and " + p.label + " meet"});
-    }
+    c.owner.resize(c.segments.size(), component.pieces[k]);
+    c.pieces.push_back(component.pieces[k]);
+    if (first > 0) c.segments[first].points.front() = c.segments[first - 1].points.back();  // snap the joint
+    const std::size_t leave = reverse ? 2 * k : 2 * k + 1;  // the end this piece is left by
+    const std::vector<std::size_t>& there = ends_at[node[leave]];
+    std::size_t next = leave;
+    for (std::size_t e : there)
+      if (e != leave) next = e;
+    if (next == leave || used[next / 2]) break;  // a free end, or back at the start
+    end = next;
   }
-
-  /// Entity k meets neither end... of the chain's end: a branch if it touches the chain elsewhere, else a gap.
-  [[noreturn]] void not_at_end(const Chain& c, std::size_t k, const V& end) const {
-    const Piece& p = pieces_[k];
-    const V s = p.segments.front().points.front(), e = p.segments.back().points.back();
-    for (const Joint& j : joints_)
-      for (const V& q : {s, e})
-        if ((q - j.point).norm() <= tol_)
-          fail(p.label + " meets the chain at " + point_text(q) + ", " + j.what + ", not at the chain's end " + point_text(end) +
-               " (the end of " + pieces_[c.owner.back()].label + "): a branch or an entity out of order; a contour is one "
-               "chain, its entities listed in order along it");
-    const bool start_nearer = (s - end).norm() <= (e - end).norm();
-    const V near = start_nearer ? s : e;
-    fail("gap of " + number((near - end).norm()) + " between the end of " + pieces_[c.owner.back()].label + " at " +
-         point_text(end) + " and " + p.label + " (its nearer end at " + point_text(near) + "); " + tolerance_text() +
-         "; entities are chained end to end in file order");
+  if (c.pieces.size() != local.size()) fail("internal: the chain of " + component_entities(pieces, component) + " was not walked whole");
+  const V s = c.segments.front().points.front();
+  if (!open && (c.segments.back().points.back() - s).norm() <= tol) {
+    c.segments.back().points.back() = s;
+    c.closed = true;
   }
+  if (local.size() == 1 && local[0].closed && !c.closed)
+    fail(local[0].label + " is flagged closed but ends at " + point_text(c.segments.back().points.back()) +
+         ", not at its start " + point_text(s) + " (for a periodic SPLINE, rollkin needs the wrapped control points)");
+  return c;
+}
 
-  [[noreturn]] void leftover(const Chain& c, std::size_t k) const {
-    const Piece& p = pieces_[k];
-    fail("the chain closed at " + point_text(c.segments.front().points.front()) + " with " + pieces_[c.owner.back()].label +
-         ", but " + p.label + " follows (a branch, or a second contour on the layer); a contour is one chain");
-  }
+double distance_to_component(const std::vector<Piece>& pieces, const Component& component, const V& q) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k : component.pieces)
+    for (const Segment& s : pieces[k].segments)
+      if (hull_distance(s, q) < best) {
+        const double d = distance_to_segment(s, q);
+        if (d < best) best = d;  // (never NaN: a distance that overflowed is no nearer)
+      }
+  return best;
+}
 
-  std::string file_;
-  const std::vector<Piece>& pieces_;
-  std::vector<Joint> joints_;
-  double size_ = 0, tol_ = 0;
-};
+V point_on_component(const std::vector<Piece>& pieces, const Component& component) {
+  const Piece& p = pieces[component.pieces.front()];
+  return point_at(p.segments[p.segments.size() / 2], 0.5);
+}
 
-}  // namespace
-
-Chain chain_pieces(const std::string& file, const std::vector<Piece>& pieces, double& size) {
-  Chainer chainer(file, pieces);
-  size = chainer.size();
-  return chainer.chain();
+std::string component_entities(const std::vector<Piece>& pieces, const Component& component, std::size_t limit) {
+  std::string s;
+  for (std::size_t i = 0; i < component.pieces.size() && i < limit; ++i) s += (i ? ", " : "") + pieces[component.pieces[i]].label;
+  if (component.pieces.size() > limit) s += ", ... (" + std::to_string(component.pieces.size()) + " entities)";
+  return s;
 }
 
 }  // namespace rollkin::dxf

@@ -31,8 +31,8 @@ class Collector : public DL_CreationAdapter {
       entity_type_ = trim(value);
       return entity_start(entity_type_, line);
     }
-    // (In ENTITIES count_value checks them too, naming the entity by its handle.)
-    if (section_ != "ENTITIES" && sizes_an_array(entity_type_, code)) bounded_count(code, value, line);
+    // (In ENTITIES and BLOCKS count_value checks them too, naming the entity by its handle.)
+    if (!recording() && sizes_an_array(entity_type_, code)) bounded_count(code, value, line);
     if (code == 2 && expect_section_name_) {
       section_ = trim(value);
       expect_section_name_ = false;
@@ -46,10 +46,14 @@ class Collector : public DL_CreationAdapter {
       }
       return;
     }
-    if (section_ != "ENTITIES" || current_ < 0) return;
+    if (!recording() || current_ < 0) return;
     RawEntity& e = entities[static_cast<std::size_t>(current_)];
-    if (real_code(code)) number_or_fail<double>(code, value, line, e.label());
-    if (int_code(code)) number_or_fail<int>(code, value, line, e.label());
+    // A malformed number is the entity's defect (reported when it is used); a count libdxflib sizes an array
+    // with is checked now (count_value), whatever the entity.
+    if (!sizes_an_array(e.type, code)) {
+      if (real_code(code)) note_number<double>(e, code, value, line);
+      if (int_code(code)) note_number<int>(e, code, value, line);
+    }
     if (in_sequence_) return;  // VERTEX, ATTRIB, SEQEND of a POLYLINE or INSERT: libdxflib reports them
     // libdxflib stores an LWPOLYLINE's vertices and bulges in an array sized by group 90 and indexed from the
     // last group 10: a vertex before the count, or a bulge before the first vertex, would be written outside it.
@@ -58,18 +62,25 @@ class Collector : public DL_CreationAdapter {
                                                                   (code == 10 ? " (vertex) before the vertex count (group 90)"
                                                                               : " (bulge) before the first vertex (group 10)"));
     switch (code) {
+      case 2:
+        if (e.type == "BLOCK") block_ = e.name = trim(value);  // the entities up to ENDBLK are this block's
+        break;
       case 5: e.handle = trim(value); break;
       case 8: e.layer = trim(value); break;
       case 10: ++e.n10; break;
       case 11: ++e.n11; break;
       case 40: ++e.n40; break;
       case 41: ++e.n41; break;
-      case 72: e.g72 = count_value(e, code, value, line); break;
-      case 73: e.g73 = count_value(e, code, value, line); break;
-      case 74: e.g74 = count_value(e, code, value, line); break;
-      case 90: e.g90 = count_value(e, code, value, line); break;
-      case 76: if (e.type == "LEADER") count_value(e, code, value, line); break;  // libdxflib: new double[3 n]
       default: break;
+    }
+    // Groups 72, 73, 74, 76 and 90 are counts only where libdxflib sizes an array with them (a VIEWPORT's or
+    // MULTILEADER's group 90 is a set of flags, -1073741824 for instance).
+    if (sizes_an_array(e.type, code)) {
+      const long n = count_value(e, code, value, line);
+      if (code == 72) e.g72 = n;
+      if (code == 73) e.g73 = n;
+      if (code == 74) e.g74 = n;
+      if (code == 90) e.g90 = n;
     }
   }
 
@@ -77,7 +88,7 @@ class Collector : public DL_CreationAdapter {
   /// group 0 EOF. An entity of the ENTITIES section still open there is cut short: libdxflib would drop it.
   void text_ended(std::size_t line, int code) const {
     std::string inside;
-    if (section_ == "ENTITIES" && current_ >= 0) {
+    if (recording() && current_ >= 0) {
       const RawEntity& e = entities[static_cast<std::size_t>(current_)];
       inside = " inside entity " + e.label() + (e.handle.empty() ? "" : " (line " + std::to_string(e.line) + ")");
     }
@@ -109,6 +120,18 @@ class Collector : public DL_CreationAdapter {
   void addVertex(const DL_VertexData& d) override {
     if (RawEntity* e = target(false)) e->vertices.push_back({d.x, d.y, d.z, d.bulge});
   }
+  void addInsert(const DL_InsertData& d) override {
+    if (RawEntity* e = target()) {
+      e->name = d.name;
+      e->v = {d.ipx, d.ipy, d.sx, d.sy, d.angle, static_cast<double>(d.cols), static_cast<double>(d.rows), d.colSp, d.rowSp};
+    }
+  }
+  void addBlock(const DL_BlockData& d) override {
+    if (RawEntity* e = target()) {
+      e->name = d.name;
+      e->v[0] = d.bpx, e->v[1] = d.bpy;
+    }
+  }
   void addSpline(const DL_SplineData& d) override {
     if (RawEntity* e = target()) {
       e->degree = static_cast<int>(d.degree);
@@ -137,6 +160,21 @@ class Collector : public DL_CreationAdapter {
       e.extrusion = {dir[0], dir[1], dir[2]};
     }
     return &e;
+  }
+
+  /// Entities are recorded in the ENTITIES section and in block definitions (which INSERTs place).
+  bool recording() const { return section_ == "ENTITIES" || section_ == "BLOCKS"; }
+
+  /// Records a malformed number as the entity's defect (the first one).
+  template <class T> void note_number(RawEntity& e, unsigned code, const std::string& value, std::size_t line) const {
+    std::string problem;
+    std::optional<T> v;
+    if constexpr (std::is_same_v<T, double>) v = read_real(value, problem);
+    else v = read_int(value, problem);
+    if (!v && e.defect.empty()) {
+      e.defect = "group " + std::to_string(code) + " value \"" + excerpt(trim(value), 40) + "\" " + problem;
+      e.defect_where = "line " + std::to_string(line + 1);
+    }
   }
 
   /// Groups from which libdxflib sizes an array (new double[k * count]) for the entity it is reading, in any
@@ -181,8 +219,8 @@ class Collector : public DL_CreationAdapter {
 
   void entity_start(const std::string& type, std::size_t line) {
     target_ = -1;
-    if (section_ == "ENTITIES" && current_ >= 0) {
-      const RawEntity& e = entities[static_cast<std::size_t>(current_)];
+    if (recording() && current_ >= 0) {
+      RawEntity& e = entities[static_cast<std::size_t>(current_)];
       const bool owner = e.type == "POLYLINE" || e.type == "INSERT";
       if (owner && (type == "VERTEX" || type == "ATTRIB" || type == "SEQEND")) {
         target_ = current_;  // libdxflib completes the POLYLINE or the previous VERTEX now
@@ -199,19 +237,25 @@ class Collector : public DL_CreationAdapter {
       section_.clear();
     } else if (type == "ENDSEC") {
       section_.clear();
-    } else if (section_ == "ENTITIES") {
+    } else if (recording()) {
       RawEntity e;
       e.type = type;
       e.line = line;
+      if (type == "ENDBLK") block_.clear();
+      e.block = block_;
       entities.push_back(e);
       current_ = static_cast<long>(entities.size()) - 1;
     }
   }
 
   /// The counts libdxflib sizes its arrays with must match the groups that follow (it keeps a missing count
-  /// from the previous entity and drops or zero-fills the difference).
-  void check_counts(const RawEntity& e) const {
-    auto fail = [&](const std::string& what) { throw InputError(file_, "line " + std::to_string(e.line), e.label() + ": " + what); };
+  /// from the previous entity and drops or zero-fills the difference): otherwise the entity's defect.
+  void check_counts(RawEntity& e) const {
+    auto fail = [&](const std::string& what) {
+      if (!e.defect.empty()) return;
+      e.defect = what;
+      e.defect_where = "line " + std::to_string(e.line);
+    };
     auto declared = [](long g) { return g < 0 ? std::string("no count") : "a count of " + std::to_string(g); };
     if (e.type == "LWPOLYLINE" && e.g90 != e.n10)
       fail("group 90 gives " + declared(e.g90) + " vertices but " + std::to_string(e.n10) + " vertices (group 10) follow");
@@ -228,7 +272,7 @@ class Collector : public DL_CreationAdapter {
 
   std::string file_;
   std::size_t pairs_, pair_ = 0;
-  std::string section_, header_variable_, entity_type_;  // entity_type_: of the last group 0, any section
+  std::string section_, header_variable_, entity_type_, block_;  // entity_type_: of the last group 0, any section
   bool expect_section_name_ = false, in_sequence_ = false;
   long current_ = -1, target_ = -1;
 };

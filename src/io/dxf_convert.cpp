@@ -37,6 +37,9 @@ std::vector<Segment> affine_arc(double t0, double t1, const V& c, const V& M, co
 /// Extrusion directions within this angle (radians) of +Z or -Z are +Z or -Z.
 constexpr double kExtrusionTolerance = 1e-12;
 
+/// An ELLIPSE's axis ratio beyond this (or below its inverse) is one axis vanishing against the join tolerance.
+constexpr double kLargestAxisRatio = 1 / kDxfJoinTolerance;
+
 /// Angles within this fraction of a turn of a whole turn count as a whole turn (rounding of written values).
 constexpr double kTurnTolerance = 1e-12;
 
@@ -138,13 +141,14 @@ class Converter {
   Piece convert(const RawEntity& e) const {
     Piece piece;
     piece.label = e.label();
+    if (!e.defect.empty()) throw InputError(file_, e.defect_where, e.label() + ": " + e.defect);
     check_extrusion(e);
     if (e.type == "LINE") line(e, piece);
     else if (e.type == "ARC" || e.type == "CIRCLE") arc(e, piece);
     else if (e.type == "ELLIPSE") ellipse(e, piece);
     else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE") polyline(e, piece);
     else if (e.type == "SPLINE") spline(e, piece);
-    if (piece.segments.empty()) fail(e, "has no extent (zero length)");
+    if (piece.segments.empty() && !piece.zero_length) fail(e, "has no extent (zero length)");
     return piece;
   }
 
@@ -153,13 +157,16 @@ class Converter {
     throw InputError(file_, "line " + std::to_string(e.line), e.label() + " " + what);
   }
 
-  bool mirrored(const RawEntity& e) const { return e.extrusion[2] < 0; }
+  bool mirrored(const RawEntity& e) const { return e.type != "SPLINE" && e.extrusion[2] < 0; }
 
   /// The extrusion direction must be +Z or -Z: its angle to the Z axis at most kExtrusionTolerance radians
   /// (round-off of a written unit normal, 0.99999999999999989 for 1), which the arbitrary axis algorithm
   /// makes exactly (0, 0, +-1) after normalising it; the sign is then that of its z (mirrored()).
+  /// A SPLINE's normal (0, 0, 0) (written by some LibreCAD versions) is +Z, as CAD programs read it; its control
+  /// points are world coordinates, so its normal never mirrors it (mirrored()).
   void check_extrusion(const RawEntity& e) const {
     const auto& n = e.extrusion;
+    if (e.type == "SPLINE" && n[0] == 0 && n[1] == 0 && n[2] == 0) return;
     if (!(n[2] != 0 && std::hypot(n[0], n[1]) <= kExtrusionTolerance * std::abs(n[2])))
       fail(e, "has extrusion direction (" + exact_number(n[0]) + ", " + exact_number(n[1]) + ", " + exact_number(n[2]) +
                   "): only drawings in the XY plane are read, extrusion (0, 0, 1) or (0, 0, -1) within " +
@@ -172,7 +179,11 @@ class Converter {
   void line(const RawEntity& e, Piece& piece) const {
     if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + exact_number(e.v[2]) + " and " + exact_number(e.v[5]) + ")");
     const V a(e.v[0], e.v[1]), b(e.v[3], e.v[4]);
-    if (a == b) fail(e, "has zero length");
+    if (a == b) {
+      piece.zero_length = true;  // dropped from a chain; alone, an error (dxf.cpp)
+      piece.segments.push_back({{a, b}, {}});
+      return;
+    }
     piece.segments.push_back({{a, b}, {}});
   }
 
@@ -195,8 +206,11 @@ class Converter {
     const double ratio = e.v[6];
     if (e.v[5] != 0) fail(e, "has a major axis out of the XY plane (z component " + exact_number(e.v[5]) + ")");
     if (!(M.norm() > 0)) fail(e, "has a zero major axis");
-    if (!(ratio > 0 && ratio <= 1)) fail(e, "has axis ratio " + exact_number(ratio) + "; it must be in (0, 1]");
-    // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1).
+    if (!(ratio > 0 && ratio <= kLargestAxisRatio))
+      fail(e, "has axis ratio " + exact_number(ratio) + "; it must be positive (and at most " + number(kLargestAxisRatio) + ")");
+    // Minor axis: ratio (N x M), N the extrusion (0, 0, +-1). A ratio above 1 (QCAD writes them) makes it the
+    // longer axis: the same curve as major axis m, ratio 1 / ratio and parameter t - pi / 2 (the axes swapped),
+    // here without the swap, which would round M and the parameters.
     const V m = mirrored(e) ? V(ratio * M.y(), -ratio * M.x()) : V(-ratio * M.y(), ratio * M.x());
     const double t0 = std::fmod(e.v[7], 2 * M_PI);
     const double sweep = ccw_sweep(e.v[7], e.v[8], 2 * M_PI);
@@ -277,12 +291,63 @@ class Converter {
       c.points.emplace_back(q[0], q[1]);
       if (e.n41 > 0) c.weights.push_back(q[3]);
     }
+    const bool wrapped = wrap_periodic(e, c);
+    std::vector<Segment> spans;
     try {
-      piece.segments = nurbs_to_bezier(c).segments;
+      spans = nurbs_to_bezier(c).segments;
     } catch (const std::invalid_argument& ex) {
       fail(e, std::string("is not a valid NURBS curve: ") + ex.what());
     }
-    piece.closed = (e.flags & 1) != 0;
+    piece.segments = without_zero_length_spans(e, spans);
+    piece.closed = (e.flags & 1) != 0 || wrapped;
+  }
+
+  /// A periodic SPLINE (group 70 bit 2) may store n control points with n + 1 knots, the knots of its n spans
+  /// (the AutoCAD DXF reference, SPLINE: "if the spline is periodic, the length of the knot vector will be
+  /// greater than the length of the control array by 1"). Its standard form wraps the first p control points
+  /// (and weights) after the last and extends the knots periodically, k_{i+n} = k_i + (k_n - k_0), by p on
+  /// each side: n + p points, n + 2 p + 1 knots, the curve on [k_0, k_n]. Returns whether it wrapped.
+  bool wrap_periodic(const RawEntity& e, Nurbs<double>& c) const {
+    const std::size_t n = c.points.size(), p = static_cast<std::size_t>(std::max(c.degree, 0));
+    if (!(e.flags & 2) || c.knots.size() != n + 1 || p < 1 || n < p) return false;
+    const double period = c.knots[n] - c.knots[0];
+    std::vector<double> knots;
+    for (std::size_t i = 0; i < p; ++i) knots.push_back(c.knots[n - p + i] - period);
+    knots.insert(knots.end(), c.knots.begin(), c.knots.end());
+    for (std::size_t i = 1; i <= p; ++i) knots.push_back(c.knots[i] + period);
+    c.knots = knots;
+    for (std::size_t i = 0; i < p; ++i) c.points.push_back(c.points[i]);
+    if (!c.weights.empty())
+      for (std::size_t i = 0; i < p; ++i) c.weights.push_back(c.weights[i]);
+    c.closed = true;
+    return true;
+  }
+
+  /// Spans of a spline whose control points all coincide (repeated control points: p + 1 of them in a row)
+  /// are points, not curve: dropped, the next span starting where the previous one ends. When every span is a
+  /// point, the error names the repeated control points.
+  std::vector<Segment> without_zero_length_spans(const RawEntity& e, const std::vector<Segment>& spans) const {
+    double extent = 0;
+    for (const auto& q : e.control) extent = std::max(extent, std::max(std::abs(q[0]), std::abs(q[1])));
+    const double point_like = 64 * std::numeric_limits<double>::epsilon() * extent;
+    std::vector<Segment> kept;
+    for (const Segment& s : spans) {
+      double reach = 0;
+      for (const V& q : s.points) reach = std::max(reach, (q - s.points.front()).norm());
+      if (reach <= point_like) continue;
+      kept.push_back(s);
+      if (kept.size() > 1) kept.back().points.front() = kept[kept.size() - 2].points.back();
+    }
+    if (kept.empty() && !spans.empty()) {
+      std::string repeats;
+      for (std::size_t i = 1; i < e.control.size(); ++i)
+        if (e.control[i][0] == e.control[i - 1][0] && e.control[i][1] == e.control[i - 1][1])
+          repeats += (repeats.empty() ? "" : ", ") + std::to_string(i - 1) + " = " + std::to_string(i);
+      fail(e, "has zero length: every span is a single point" +
+                  (repeats.empty() ? std::string() : " (repeated control points " + repeats + ")") +
+                  "; give the spline distinct control points");
+    }
+    return kept;
   }
 
   std::string file_;

@@ -1,6 +1,7 @@
 // libFuzzer harness: bytes -> the DXF contour reader the scene's {"type": "dxf"} contours use
-// (parse_dxf_contour, include/rollkin/io/dxf.hpp), selecting layer "0" and, by handle, "2F". Every input is
-// read once by layer and once by handle, so both selection paths and the chaining behind them are exercised.
+// (parse_dxf_contour, include/rollkin/io/dxf.hpp), selecting layer "0", by handle "2F", by handles "2F" and
+// "30", and near (0, 0): every selection path, the order-free chaining and the placement of INSERTs (nesting
+// depth and cycles bounded) behind them are exercised.
 #include "fuzz_support.hpp"
 #include "rollkin/io/dxf.hpp"
 
@@ -12,5 +13,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text = rollkin::fuzz::as_text(data, size);
   rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, rollkin::DxfSelection{"0", ""}, "fuzz.dxf"); });
   rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, rollkin::DxfSelection{"", "2F"}, "fuzz.dxf"); });
+  rollkin::DxfSelection handles;
+  handles.handles = {"2F", "30"};
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, handles, "fuzz.dxf"); });
+  rollkin::DxfSelection near;
+  near.near = rollkin::Vec2<double>(0, 0);
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, near, "fuzz.dxf"); });
   return 0;
 }

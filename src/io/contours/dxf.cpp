@@ -1,4 +1,4 @@
-// "dxf" contours: the entities of one layer (or one entity by handle) of a DXF drawing, chained by
+// "dxf" contours: one chain of a DXF drawing (a layer's, the one near a point, or given entities), chained by
 // read_dxf_contour (io/dxf.hpp), converted to scene units and made a BezierPath (docs/scene_format.md, "dxf").
 #include "contour_reader.hpp"
 
@@ -8,18 +8,53 @@ namespace rollkin::io {
 
 namespace {
 
-/// "layer" or "handle", exactly one.
+/// The selector (io/dxf.hpp, "Selection"): "layer" (with or without "near"), "near" alone, "handle" alone or
+/// "handles" alone.
 DxfSelection dxf_selection(const json& c, const std::string& path, const JsonAccess& js) {
   const json* layer = js.get(c, "layer");
   const json* handle = js.get(c, "handle");
-  if (layer && handle) js.fail(child(path, "handle"), "give either \"layer\" or \"handle\", not both");
-  if (!layer && !handle) js.fail(path, "missing key \"layer\" or \"handle\": expected the DXF layer name or the entity handle");
+  const json* handles = js.get(c, "handles");
+  const json* near = js.get(c, "near");
+  const int ways = int(handle != nullptr) + int(handles != nullptr) + int(layer != nullptr || near != nullptr);
+  if (ways > 1)
+    js.fail(child(path, handle ? "handle" : "handles"),
+            "give one selector: \"layer\" (optionally with \"near\"), \"near\", \"handle\" or \"handles\"");
+  if (ways == 0)
+    js.fail(path, "missing key \"layer\", \"near\", \"handle\" or \"handles\": expected the DXF layer name, a point "
+                  "[x, y] near the contour (drawing units), an entity handle or a list of handles");
   DxfSelection sel;
-  const std::string key = layer ? "layer" : "handle";
-  std::string& value = layer ? sel.layer : sel.handle;
-  value = js.string(layer ? *layer : *handle, child(path, key), layer ? "a layer name" : "an entity handle (hexadecimal)");
-  if (value.empty()) js.fail(child(path, key), "expected a non-empty " + key);
+  if (layer) {
+    sel.layer = js.string(*layer, child(path, "layer"), "a layer name");
+    if (sel.layer.empty()) js.fail(child(path, "layer"), "expected a non-empty layer");
+  }
+  if (near) sel.near = js.point(*near, child(path, "near"));
+  if (handle) {
+    sel.handle = js.string(*handle, child(path, "handle"), "an entity handle (hexadecimal)");
+    if (sel.handle.empty()) js.fail(child(path, "handle"), "expected a non-empty handle");
+  }
+  if (handles) {
+    const json& list = js.array(*handles, child(path, "handles"), "a list of entity handles");
+    if (list.empty()) js.fail(child(path, "handles"), "expected at least one handle");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string where = child(path, "handles") + "[" + std::to_string(i) + "]";
+      sel.handles.push_back(js.string(list[i], where, "an entity handle (hexadecimal)"));
+      if (sel.handles.back().empty()) js.fail(where, "expected a non-empty handle");
+    }
+  }
   return sel;
+}
+
+/// How messages name the selection.
+std::string selection_name(const DxfSelection& sel) {
+  if (!sel.handle.empty()) return "entity " + sel.handle;
+  if (!sel.handles.empty()) {
+    std::string s = "entities ";
+    for (std::size_t i = 0; i < sel.handles.size(); ++i) s += (i ? ", " : "") + sel.handles[i];
+    return s;
+  }
+  std::string s = sel.layer.empty() ? std::string("the drawing") : "layer \"" + sel.layer + "\"";
+  if (sel.near) s += " near (" + fmt(sel.near->x()) + ", " + fmt(sel.near->y()) + ")";
+  return s;
 }
 
 /// Every point multiplied by `factor` (an affine map: rational weights stay as they are).
@@ -32,7 +67,7 @@ void scale_segments(std::vector<BezierSegment<double>>& segments, double factor)
 
 ContourShape read_dxf_contour(const json& c, const std::string& path, const ContourContext& ctx) {
   const JsonAccess& js = ctx.js;
-  ctx.keys(c, path, {"file", "layer", "handle", "scale", "parameter"});
+  ctx.keys(c, path, {"file", "layer", "handle", "handles", "near", "scale", "parameter"});
   const std::string file = ctx.contour_file(js.require(c, path, "file", "the DXF file"), child(path, "file"));
   const DxfSelection sel = dxf_selection(c, path, js);
   const double scale = ctx.scale(c, path);
@@ -42,7 +77,7 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
   }
-  const std::string what = sel.layer.empty() ? "entity " + sel.handle : "layer \"" + sel.layer + "\"";
+  const std::string what = selection_name(sel);
   const std::string drawing_unit = dxf.unit.empty() ? "drawing units" : dxf.unit;
   std::vector<Vec2<double>> joint_points;  // in drawing units, for messages
   for (const BezierSegment<double>& s : dxf.segments) joint_points.push_back(s.points.front());

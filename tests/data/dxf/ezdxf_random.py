@@ -8,9 +8,17 @@ writes OUTDIR/random_SEED_I.dxf for I < COUNT (seeded: the same arguments give t
 for each drawing, one block
 
     case PATH
-    layer NAME                  one chain of entities, end to end, in file order
-    entity TYPE HANDLE          an entity of the chain, then the points on it in its own direction:
+    layer NAME                  one chain of entities, end to end, in the order rollkin walks it
+    start X Y                   where that walk starts, when not at the first point of the first entity
+    entity TYPE HANDLE          an entity of the chain (for a block's: TYPE HANDLE in INSERT H [in INSERT H2]),
+                                then the points on it in its own direction:
     p X Y                       world (WCS) coordinates, repr() of the double
+
+A quarter of the chains are drawn in a block and placed by an INSERT (rotation, x/y scale +-0.3 .. 3,
+negative and non-uniform, extrusion +-Z, the block's base point), a third of those through a nested INSERT;
+their points are ezdxf's on the block's entities mapped by the product of ezdxf's Insert.matrix44(). ELLIPSEs
+are written with axis ratio > 1 now and then (QCAD 2); MULTILEADER, TEXT, a paper-space VIEWPORT and text
+after EOF appear in some drawings; half the drawings list their modelspace entities in a random order.
 
 Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them: one chain per layer), each
 a closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4
@@ -32,7 +40,7 @@ import sys
 
 import ezdxf
 import mpmath
-from ezdxf.math import Vec3
+from ezdxf.math import Vec2, Vec3
 
 mpmath.mp.dps = 60
 SAMPLES = 48
@@ -54,6 +62,31 @@ def bulge_points(a, b, bulge, n=SAMPLES):
              float(cy + radius * mpmath.sin(start + sweep * i / (n - 1)))) for i in range(n)]
 
 
+def save_with_ratios(doc, path, ratios):
+    """doc.saveas(path), then the ELLIPSEs whose handles `ratios` maps written with that axis ratio (above 1, as
+    QCAD 2 writes them: ezdxf refuses to write them, so they are saved with ratio 1 and group 40 is replaced in
+    the text)."""
+    entities = {h: e for h, e in ((h, doc.entitydb.get(h)) for h in ratios)}
+    for e in entities.values():
+        e.dxf.unprotected_set("ratio", 1.0)
+    doc.saveas(path)
+    for h, e in entities.items():
+        e.dxf.unprotected_set("ratio", ratios[h])
+    with open(path) as f:
+        lines = f.read().split("\n")
+    kind = handle = None
+    for i in range(0, len(lines) - 1, 2):
+        code, value = lines[i].strip(), lines[i + 1].strip()
+        if code == "0":
+            kind, handle = value, None
+        elif code == "5":
+            handle = value
+        elif code == "40" and kind == "ELLIPSE" and handle in ratios:
+            lines[i + 1] = repr(ratios[handle])
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+
+
 def to_ocs(p, mirrored):
     """WCS (x, y) to the OCS of extrusion (0, 0, -1) (arbitrary axis algorithm: Ax = (-1, 0, 0)), or as is."""
     return (-p[0], p[1]) if mirrored else (p[0], p[1])
@@ -65,6 +98,8 @@ class Drawing:
         self.path = path
         self.doc = ezdxf.new("R2010")
         self.msp = self.doc.modelspace()
+        self.space = self.msp  # where the adders draw: the modelspace or a block definition
+        self.ratios = {}  # handle -> axis ratio above 1 of an ELLIPSE (save_with_ratios)
         self.scale = 10 ** rng.uniform(-2, 4)
         self.layers = []  # (name, [(label, points)])
 
@@ -87,7 +122,7 @@ class Drawing:
         d = self.step()
         q = (p[0] + d[0], p[1] + d[1])
         backwards = self.rng.random() < 0.5 and not first
-        e = self.msp.add_line(q if backwards else p, p if backwards else q, dxfattribs=attribs)
+        e = self.space.add_line(q if backwards else p, p if backwards else q, dxfattribs=attribs)
         s, f = Vec3(e.dxf.start), Vec3(e.dxf.end)
         pts = [s.lerp(f, i / (SAMPLES - 1)) for i in range(SAMPLES)]
         return e, [(v.x, v.y) for v in pts], q
@@ -101,7 +136,7 @@ class Drawing:
         po = to_ocs(p, mirrored)
         c = (po[0] - r * math.cos(math.radians(at)), po[1] - r * math.sin(math.radians(at)))
         a0, a1 = (at - sweep, at) if backwards else (at, at + sweep)
-        e = self.msp.add_arc(c, r, a0, a1, dxfattribs={**attribs, "extrusion": n})
+        e = self.space.add_arc(c, r, a0, a1, dxfattribs={**attribs, "extrusion": n})
         s, f = e.dxf.start_angle, e.dxf.end_angle
         while f <= s:
             f += 360.0
@@ -118,12 +153,24 @@ class Drawing:
         t0 = self.rng.uniform(0, 2 * math.pi)
         t1 = t0 + self.rng.uniform(0.3, 6)
         c = (p[0] - major[0] * math.cos(t0) - minor[0] * math.sin(t0), p[1] - major[1] * math.cos(t0) - minor[1] * math.sin(t0))
-        e = self.msp.add_ellipse(c, (major[0], major[1], 0), ratio, t0, t1, dxfattribs={**attribs, "extrusion": n})
+        e = self.space.add_ellipse(c, (major[0], major[1], 0), ratio, t0, t1, dxfattribs={**attribs, "extrusion": n})
+        self.maybe_swap_axes(e)
         s, f = e.dxf.start_param, e.dxf.end_param
         while f <= s:
             f += 2 * math.pi
         pts = [(v.x, v.y) for v in e.vertices([s + (f - s) * i / (SAMPLES - 1) for i in range(SAMPLES)])]
         return e, pts, pts[-1]
+
+    def maybe_swap_axes(self, e):
+        """Now and then the same ellipse written with axis ratio > 1, as QCAD 2 writes them: major axis
+        ratio (N x M), ratio 1 / ratio, parameters - pi / 2 (p(t) = c + cos t M + sin t ratio (N x M))."""
+        if self.rng.random() < 0.3:
+            major, ratio, normal = Vec3(e.dxf.major_axis), e.dxf.ratio, Vec3(e.dxf.extrusion)
+            e.dxf.major_axis = normal.cross(major) * ratio
+            e.dxf.unprotected_set("ratio", 1 / ratio)  # ezdxf keeps ratios in (0, 1]: written by save_with_ratios
+            self.ratios[e.dxf.handle] = 1 / ratio
+            e.dxf.start_param = e.dxf.start_param - math.pi / 2
+            e.dxf.end_param = e.dxf.end_param - math.pi / 2
 
     def one_circle(self, p, mirrored):
         """OCS vertices from p on one circle, arcs of random angles turning one way, and their bulges."""
@@ -151,10 +198,10 @@ class Drawing:
             bulges = [self.bulge() for _ in ocs[:-1]] + [0.0]
         points = [(q[0], q[1], k) for q, k in zip(ocs, bulges)]
         if lw:
-            e = self.msp.add_lwpolyline(points, format="xyb", dxfattribs={**attribs, "extrusion": n})
+            e = self.space.add_lwpolyline(points, format="xyb", dxfattribs={**attribs, "extrusion": n})
             vertices = [(x, y, k) for x, y, _, _, k in e.get_points("xyseb")]
         else:
-            e = self.msp.add_polyline2d(points, format="xyb", dxfattribs={**attribs, "extrusion": n})
+            e = self.space.add_polyline2d(points, format="xyb", dxfattribs={**attribs, "extrusion": n})
             vertices = [(v.dxf.location.x, v.dxf.location.y, v.dxf.bulge) for v in e.vertices]
         pts = []
         for (x0, y0, k), (x1, y1, _) in zip(vertices, vertices[1:]):
@@ -171,7 +218,7 @@ class Drawing:
         weights = [self.rng.uniform(0.3, 3) for _ in ctrl]
         interior = sorted(round(self.rng.uniform(0.05, 0.95), 3) for _ in range(count - degree - 1))
         knots = [0.0] * (degree + 1) + interior + [1.0] * (degree + 1)
-        e = self.msp.add_rational_spline(ctrl, weights, degree=degree, knots=knots, dxfattribs=attribs)
+        e = self.space.add_rational_spline(ctrl, weights, degree=degree, knots=knots, dxfattribs=attribs)
         bs = e.construction_tool()
         ks = bs.knots()
         lo, hi = ks[degree], ks[len(ks) - degree - 1]
@@ -183,15 +230,17 @@ class Drawing:
         n = self.extrusion()
         kind = self.rng.choice(("circle", "ellipse", "lwpolyline"))
         if kind == "circle":
-            e = self.msp.add_circle(to_ocs(p, n[2] < 0), self.scale * self.rng.uniform(0.2, 1),
+            e = self.space.add_circle(to_ocs(p, n[2] < 0), self.scale * self.rng.uniform(0.2, 1),
                                     dxfattribs={**attribs, "extrusion": n})
             return e, [(v.x, v.y) for v in e.vertices([360.0 * i / (SAMPLES - 1) for i in range(SAMPLES)])]
         if kind == "ellipse":
             t = self.rng.uniform(0, 2 * math.pi)
             a = self.scale * self.rng.uniform(0.3, 1)
-            e = self.msp.add_ellipse(p, (a * math.cos(t), a * math.sin(t), 0), self.rng.uniform(0.1, 1), 0, 2 * math.pi,
+            e = self.space.add_ellipse(p, (a * math.cos(t), a * math.sin(t), 0), self.rng.uniform(0.1, 1), 0, 2 * math.pi,
                                      dxfattribs={**attribs, "extrusion": n})
-            return e, [(v.x, v.y) for v in e.vertices([2 * math.pi * i / (SAMPLES - 1) for i in range(SAMPLES)])]
+            self.maybe_swap_axes(e)
+            s = e.dxf.start_param
+            return e, [(v.x, v.y) for v in e.vertices([s + 2 * math.pi * i / (SAMPLES - 1) for i in range(SAMPLES)])]
         mirrored = n[2] < 0
         # a convex polygon around p (no self-intersection whatever the bulges' signs up to a half turn each)
         count = self.rng.randint(2, 6)
@@ -199,7 +248,7 @@ class Drawing:
         r = self.scale * self.rng.uniform(0.3, 1)
         ocs = [to_ocs((p[0] + r * math.cos(a), p[1] + r * math.sin(a)), mirrored) for a in angles]
         bulges = [self.rng.choice((0.0, 10 ** self.rng.uniform(-18, 0), -10 ** self.rng.uniform(-18, -1))) for _ in ocs]
-        e = self.msp.add_lwpolyline([(q[0], q[1], k) for q, k in zip(ocs, bulges)], format="xyb", close=True,
+        e = self.space.add_lwpolyline([(q[0], q[1], k) for q, k in zip(ocs, bulges)], format="xyb", close=True,
                                     dxfattribs={**attribs, "extrusion": n})
         vertices = [(x, y, k) for x, y, _, _, k in e.get_points("xyseb")]
         pts = []
@@ -212,24 +261,96 @@ class Drawing:
         span = 10 * self.scale
         p = (self.rng.uniform(-span, span), self.rng.uniform(-span, span))
         entities = []
+        block = None
+        if self.rng.random() < 0.25:  # drawn in a block, placed by an INSERT
+            block = self.doc.blocks.new(f"B_{name}", base_point=(self.rng.uniform(-span, span), self.rng.uniform(-span, span)))
+            self.space = block
         if self.rng.random() < 0.15:
             e, pts = self.closed(p, attribs)
-            self.layers.append((name, [(f"{e.dxftype()} {e.dxf.handle}", pts)]))
-            return
-        for k in range(self.rng.randint(1, 4)):
-            kind = self.rng.choice(("line", "arc", "ellipse", "lwpolyline", "polyline", "spline"))
-            if kind == "lwpolyline" or kind == "polyline":
-                e, pts, p = self.polyline(p, attribs, kind == "lwpolyline")
-            else:
-                e, pts, p = getattr(self, kind)(p, attribs, k == 0)
-            entities.append((f"{e.dxftype()} {e.dxf.handle}", pts))
-        self.layers.append((name, entities))
+            entities.append((e, pts))
+        else:
+            for k in range(self.rng.randint(1, 4)):
+                kind = self.rng.choice(("line", "arc", "ellipse", "lwpolyline", "polyline", "spline"))
+                if kind == "lwpolyline" or kind == "polyline":
+                    e, pts, p = self.polyline(p, attribs, kind == "lwpolyline")
+                else:
+                    e, pts, p = getattr(self, kind)(p, attribs, k == 0)
+                entities.append((e, pts))
+        self.space = self.msp
+        if block is None:
+            self.layers.append((name, [(f"{e.dxftype()} {e.dxf.handle}", pts) for e, pts in entities], p))
+        else:
+            self.layers.append((name, self.insert(name, block, entities), None))
+
+    def placement(self, name):
+        """Random INSERT attributes: rotation, x/y scale +-0.3 .. 3 (negative, non-uniform), extrusion +-Z."""
+        n = self.extrusion()
+        sx, sy = (self.rng.choice((-1, 1)) * 10 ** self.rng.uniform(-0.5, 0.5) for _ in range(2))
+        if self.rng.random() < 0.3:
+            sy = sx  # uniform
+        return {"layer": name, "rotation": self.rng.uniform(-360, 360), "xscale": sx, "yscale": sy, "extrusion": n}
+
+    def insert(self, name, block, entities):
+        """Places `block` by an INSERT on layer `name` (now and then an INSERT of a block holding that INSERT);
+        returns the entities' labels and ezdxf's points mapped by the product of ezdxf's Insert.matrix44()."""
+        span = 10 * self.scale
+        at = (self.rng.uniform(-span, span), self.rng.uniform(-span, span))
+        attribs = self.placement(name)
+        if self.rng.random() < 0.3:
+            outer_block = self.doc.blocks.new(f"N_{name}", base_point=(self.rng.uniform(-span, span), self.rng.uniform(-span, span)))
+            inner = outer_block.add_blockref(block.name, to_ocs(at, attribs["extrusion"][2] < 0), dxfattribs=attribs)
+            at2 = (self.rng.uniform(-span, span), self.rng.uniform(-span, span))
+            attribs2 = self.placement(name)
+            outer = self.msp.add_blockref(outer_block.name, to_ocs(at2, attribs2["extrusion"][2] < 0), dxfattribs=attribs2)
+            m = inner.matrix44() @ outer.matrix44()
+            suffix = f" in INSERT {inner.dxf.handle} in INSERT {outer.dxf.handle}"
+        else:
+            ins = self.msp.add_blockref(block.name, to_ocs(at, attribs["extrusion"][2] < 0), dxfattribs=attribs)
+            m = ins.matrix44()
+            suffix = f" in INSERT {ins.dxf.handle}"
+        return [(f"{e.dxftype()} {e.dxf.handle}{suffix}", [(v.x, v.y) for v in (m.transform(Vec3(x, y, 0)) for x, y in pts)])
+                for e, pts in entities]
+
+    def extras(self):
+        """Now and then what real drawings hold besides the contours: a MULTILEADER on a contour's layer (its group
+        90 holds flags such as -1056964608), a paper-space VIEWPORT (group 90: status flags 557152), a TEXT; the
+        modelspace entities in a random order (rollkin walks each chain from the free end of its entity first in
+        the file: a chain whose last entity comes first is read backwards)."""
+        if self.rng.random() < 0.2:
+            ml = self.msp.add_multileader_mtext("Standard", dxfattribs={"layer": "CHAIN0"})
+            ml.set_content("note")
+            ml.add_leader_line(ezdxf.render.mleader.ConnectionSide.left, [Vec2(0, 0)])
+            ml.build(insert=Vec2(self.scale, self.scale))
+            self.msp.add_text("label", dxfattribs={"layer": "CHAIN0"})
+        if self.rng.random() < 0.2:
+            vp = self.doc.layout("Layout1").add_viewport(center=(100, 100), size=(200, 150), view_center_point=(0, 0),
+                                                          view_height=300)
+            vp.dxf.flags = 557152
+        if self.rng.random() < 0.5:
+            order = list(self.msp)
+            self.rng.shuffle(order)
+            for e in order:
+                self.msp.unlink_entity(e)
+                self.msp.add_entity(e)
+        position = {e.dxf.handle: i for i, e in enumerate(self.msp)}
+        self.starts = {}  # layer -> where rollkin's walk starts, when not at the first entity's first point
+        for k, (name, entities, end) in enumerate(self.layers):
+            first, last = (position.get(label.split()[1]) for label in (entities[0][0], entities[-1][0]))
+            if len(entities) > 1 and first is not None and last < first:
+                self.layers[k] = (name, list(reversed(entities)), end)
+                self.starts[name] = end
 
     def write(self):
-        self.doc.saveas(self.path)
+        self.extras()
+        save_with_ratios(self.doc, self.path, self.ratios)
+        if self.rng.random() < 0.2:
+            with open(self.path, "a") as f:  # what some exporters leave after 0 EOF
+                f.write("not DXF after EOF\n999\n")
         out = [f"case {self.path}"]
-        for name, entities in self.layers:
+        for name, entities, _ in self.layers:
             out.append(f"layer {name}")
+            if name in self.starts:
+                out.append(f"start {self.starts[name][0]!r} {self.starts[name][1]!r}")
             for label, pts in entities:
                 out.append(f"entity {label}")
                 out += [f"p {x!r} {y!r}" for x, y in pts]

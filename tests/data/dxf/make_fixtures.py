@@ -32,15 +32,20 @@ Files and what each exercises:
                     y = 0.5 x^2, x in [-2, 2], as a 2-span polynomial quadratic B-spline (control points
                     (-2, 2), (-1, 0), (1, 0), (2, 2), knots 0 0 0 1 2 2 2; each span's Bezier points are
                     the parabola's end points and tangent intersection, so it is the parabola exactly).
-  errors.dxf        GAP: two LINEs 1e-3 apart. BRANCH: three LINEs meeting at one point. TEXT: a LINE and a
-                    TEXT. INSERT: a LINE and an INSERT of block "B". FITONLY: a SPLINE by fit points only.
-                    ORDER: the second LINE meets the first one's start, not its end.
+  errors.dxf        GAP: two LINEs 1e-3 apart (two chains). BRANCH: three LINEs meeting at one point. TEXT: a
+                    LINE and a TEXT (passed over). INSERT: a LINE and an INSERT of block "B" apart from it (two
+                    chains). FITONLY: a SPLINE by fit points only. ORDER: the second LINE meets the first one's
+                    start (chained in any order).
   units_miles.dxf   $INSUNITS 3 (miles): refused.
   scenes_mm.dxf     $INSUNITS 4, contours of whole scenes (tests/test_io_cad_scenes.cpp), drawn in millimetres for
                     scenes in metres: PARABOLA_MM the paper's parabola y = 0.5 x^2 (x in metres) as the 2-span
                     quadratic SPLINE of PARABOLA scaled by 1000; DISK_MM a circle of radius 1000 mm about the
                     origin made of two bulge-1 arcs (closed LWPOLYLINE); TRACK_MM a LINE from (-10000, 0) to
                     (10000, 0) mm.
+  blocks_mm.dxf     $INSUNITS 4. PARABOLA_INS: the parabola of PARABOLA_MM inside a rotated, mirrored INSERT (the
+                    block holds it mapped back). Layer 0: a wheel block (rim of two ARCs, radius 1000, a hub
+                    CIRCLE, centre marks) inserted rotated and mirrored at the origin, a TEXT and a LINE track
+                    along y = 0 (tests/test_io_cad_scenes.cpp selects the rim and the track by "near").
   straight_mm.dxf   $INSUNITS 4. RUN: a straight LWPOLYLINE from (-5000, 0) to (5000, 0) mm through 2001 collinear
                     vertices spaced 2.5 and 7.5 mm in turn (tests/test_io_cad_scenes.cpp: a disk rolls along it).
 """
@@ -211,6 +216,42 @@ def splines_mm():
     answer("splines_mm", "PARABOLA", [parabola], [("closed", 0)])
 
 
+def blocks_mm():
+    """Contours inside blocks and on a layer shared with other geometry (tests/test_io_cad_scenes.cpp)."""
+    doc = new_doc("R2010", 4)
+    msp = doc.modelspace()
+    # The paper's parabola (PARABOLA_MM of scenes_mm) inside an INSERT rotated by 33 degrees and mirrored
+    # (x scale -1), base point (700, -300), at (250, 125): the block holds the control points mapped by the
+    # inverse placement, q = base + diag(-1, 1) R(-33 deg) (p - insert), so that the INSERT puts them back.
+    th = math.radians(33.0)
+    base, at = (700.0, -300.0), (250.0, 125.0)
+
+    def unplace(p):
+        dx, dy = p[0] - at[0], p[1] - at[1]
+        rx, ry = math.cos(th) * dx + math.sin(th) * dy, -math.sin(th) * dx + math.cos(th) * dy
+        return (base[0] - rx, base[1] + ry)
+
+    part = doc.blocks.new("PARABOLA_PART", base_point=base)
+    part.add_open_spline([unplace(p) for p in ((-2000, 2000), (-1000, 0), (1000, 0), (2000, 2000))], degree=2,
+                         knots=[0, 0, 0, 1, 2, 2, 2])
+    msp.add_blockref("PARABOLA_PART", at, dxfattribs={"layer": "PARABOLA_INS", "rotation": 33.0, "xscale": -1.0,
+                                                        "yscale": 1.0})
+    # Layer "0" holds everything: a wheel block (rim of two ARCs, radius 1000 about its base point (500, 300), a hub
+    # CIRCLE of radius 200, two centre-mark LINEs crossing at the centre) inserted at the origin, rotated 33
+    # degrees and mirrored, a TEXT, and the track, a LINE from (-10000, 0) to (10000, 0) through the wheel: the rim and the
+    # track are picked by "near".
+    wheel = doc.blocks.new("WHEEL", base_point=(500, 300))
+    wheel.add_arc((500, 300), 1000, 0, 180)
+    wheel.add_arc((500, 300), 1000, 180, 360)
+    wheel.add_circle((500, 300), 200)
+    wheel.add_line((350, 300), (650, 300))
+    wheel.add_line((500, 150), (500, 450))
+    msp.add_blockref("WHEEL", (0, 0), dxfattribs={"layer": "0", "rotation": 33.0, "xscale": -1.0, "yscale": 1.0})
+    msp.add_text("wheel", dxfattribs={"layer": "0", "insert": (0, 1200)})
+    msp.add_line((-10000, 0), (10000, 0), dxfattribs={"layer": "0"})
+    save(doc, "blocks_mm")
+
+
 def errors():
     doc = new_doc("R2010")
     msp = doc.modelspace()
@@ -229,11 +270,11 @@ def errors():
     order = [msp.add_line((0, 0), (1, 0), dxfattribs={"layer": "ORDER"}),
              msp.add_line((0, 1), (0, 0), dxfattribs={"layer": "ORDER"})]
     save(doc, "errors")
-    answer("errors", "GAP", gap, [("names", label(gap[0])), ("names", label(gap[1])), ("names", "gap of 0.001")], False)
+    answer("errors", "GAP", gap, [("names", label(gap[0])), ("names", label(gap[1])), ("names", "form 2 chains")], False)
     answer("errors", "BRANCH", branch, [("names", label(branch[2])), ("names", label(branch[0])),
                                         ("names", label(branch[1])), ("names", "branch")], False)
     answer("errors", "TEXT", text, [("names", label(text[1])), ("names", "unsupported")], False)
-    answer("errors", "INSERT", insert, [("names", label(insert[1])), ("names", "unsupported")], False)
+    answer("errors", "INSERT", insert, [("names", label(insert[1])), ("names", "form 2 chains")], False)
     answer("errors", "FITONLY", fit, [("names", label(fit[0])), ("names", "only fit points")], False)
     answer("errors", "ORDER", order, [("names", label(order[1])), ("names", "chain's start")], False)
 
@@ -281,6 +322,7 @@ if __name__ == "__main__":
     polyline_r12()
     splines_mm()
     errors()
+    blocks_mm()
     units_miles()
     scenes_mm()
     straight_mm()
