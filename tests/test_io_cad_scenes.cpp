@@ -138,33 +138,57 @@ BOOST_AUTO_TEST_CASE(two_bulge_disk_rolling_on_a_dxf_line_is_the_cycloid) {
 BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cycloid) {
   // Centre: scale(2) then rotate(30) keep (0, 0); translate(50 50) moves it to (50, 50) mm, flipped (50, -50)
   // mm = (5, -5) cm, put back on the link's origin by "at". Radius 2 * 5 mm = 1 cm.
-  const std::string svg =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">\n"
-      "  <g transform=\"translate(50 50) rotate(30)\">\n"
-      "    <g transform=\"scale(2)\"><circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/></g>\n"
-      "  </g>\n"
-      "</svg>\n";
-  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk.svg", svg);
+  // The same disk drawn as a drawing holds it: a <use> clone of a circle in <defs>; in a group with its hub
+  // (radius 2 mm) selected by "subpath" and by "near" (in the contour's coordinates: cm, y up, before "at"); as
+  // the second subpath of a compound path (the hub first); inside Illustrator's <switch>.
+  struct Variant {
+    std::string name, drawing, selector;
+  };
+  const std::string hub = "<circle cx=\"0\" cy=\"0\" r=\"1\"/>";
+  const std::vector<Variant> variants = {
+      {"circle", "<circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/>", "\"path\": \"disk\""},
+      {"use", "<defs><circle id=\"proto\" r=\"5\"/></defs><use id=\"disk\" href=\"#proto\"/>", "\"path\": \"disk\""},
+      {"group_subpath", "<g id=\"part\">" + hub + "<circle cx=\"0\" cy=\"0\" r=\"5\"/></g>", "\"path\": \"part\", \"subpath\": 2"},
+      {"group_near", "<g id=\"part\">" + hub + "<circle cx=\"0\" cy=\"0\" r=\"5\"/></g>", "\"near\": [5.6, -4.3]"},
+      {"compound", "<path id=\"part\" d=\"M 1 0 A 1 1 0 0 1 -1 0 A 1 1 0 0 1 1 0 Z M 5 0 A 5 5 0 0 1 -5 0 A 5 5 0 0 1 5 0 Z\"/>",
+       "\"path\": \"part\", \"subpath\": 2"},
+      {"switch", "<switch><foreignObject requiredExtensions=\"http://ns.adobe.com/AdobeIllustrator/10.0/\"/>"
+                 "<g><circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/></g></switch>", "\"path\": \"disk\""}};
   std::string analytic_text = replaced(read_text(kExamples + "cycloid.json"), "\"length\": \"m\"", "\"length\": \"cm\"");
-  std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}",
-                              "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"disk\", \"at\": {\"x\": -5, \"y\": 5}}");
   const io::Scene analytic = scene_from("cycloid_cm.json", analytic_text);
-  const io::Scene s = scene_from("cycloid_svg.json", text);
-  const auto ra = solved(analytic), rs = solved(s);
-  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  const auto ra = solved(analytic);
   const int turn_a = analytic.mechanism.find_variable("H.psi");
-  // Disk angles counted from the first pose (s = 0): the SVG circle's start point is rotated by the groups,
-  // so the rim point the assembly puts in contact, and with it the initial psi, may differ.
-  const double psi0 = rs.poses.front().q(turn), psi0_a = ra.poses.front().q(turn_a);
-  double worst = 0, closed_form = 0;
-  for (std::size_t k = 0; k < rs.poses.size(); ++k) {
-    const double dpsi = rs.poses[k].q(turn) - psi0;
-    worst = std::max(worst, std::abs(dpsi - (ra.poses[k].q(turn_a) - psi0_a)));
-    closed_form = std::max(closed_form, std::abs(dpsi + rs.poses[k].q(travel)));
+  for (const Variant& v : variants) {
+    BOOST_TEST_CONTEXT(v.name) {
+      const std::string svg =
+          "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">\n"
+          "  <g transform=\"translate(50 50) rotate(30)\">\n"
+          "    <g transform=\"scale(2)\">" + v.drawing + "</g>\n"
+          "  </g>\n"
+          "</svg>\n";
+      const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / ("disk_" + v.name + ".svg"), svg);
+      const std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}",
+                                        "\"type\": \"svg\", \"file\": \"" + svg_file + "\", " + v.selector +
+                                            ", \"at\": {\"x\": -5, \"y\": 5}}");
+      const io::Scene s = scene_from("cycloid_svg_" + v.name + ".json", text);
+      const auto rs = solved(s);
+      const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+      // Disk angles counted from the first pose (s = 0): the SVG circle's start point is rotated by the groups,
+      // so the rim point the assembly puts in contact, and with it the initial psi, may differ.
+      const double psi0 = rs.poses.front().q(turn), psi0_a = ra.poses.front().q(turn_a);
+      double worst = 0, closed_form = 0;
+      BOOST_REQUIRE_EQUAL(rs.poses.size(), ra.poses.size());
+      for (std::size_t k = 0; k < rs.poses.size(); ++k) {
+        const double dpsi = rs.poses[k].q(turn) - psi0;
+        worst = std::max(worst, std::abs(dpsi - (ra.poses[k].q(turn_a) - psi0_a)));
+        closed_form = std::max(closed_form, std::abs(dpsi + rs.poses[k].q(travel)));
+      }
+      BOOST_TEST_MESSAGE("cycloid from SVG (" << v.name << "): vs analytic " << worst << " rad, vs closed form "
+                                              << closed_form << " rad");
+      BOOST_TEST(worst < 1e-9 * kDeg);
+      BOOST_TEST(closed_form < 1e-9 * kDeg);
+    }
   }
-  BOOST_TEST_MESSAGE("cycloid from SVG: vs analytic " << worst << " rad, vs closed form " << closed_form << " rad");
-  BOOST_TEST(worst < 1e-9 * kDeg);
-  BOOST_TEST(closed_form < 1e-9 * kDeg);
 }
 
 // A straight run drawn through many collinear vertices of different spacing is one line: a disk rolls along
