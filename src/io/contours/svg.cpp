@@ -6,6 +6,7 @@
 #include "rollkin/io/svg_path.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace rollkin::io {
 
@@ -56,9 +57,12 @@ ContourShape read_svg_contour(const json& c, const std::string& path, const Cont
   std::vector<std::size_t> first;  // per piece of the path, its first segment of the shape (origins)
   try {
     shape = read_svg_shape(svg, id, opt);
-    ctx.note(shape.conversion);
     first = join_straight_runs(shape.segments);
     bezier.emplace(svg_bezier_path(shape));
+    std::ostringstream read;  // what was read, for --verbose (and to compare with `rollkin contours`)
+    read.precision(15);
+    read << "; read " << (shape.closed ? "closed" : "open") << ", length " << bezier->total_length() << " (scene units)";
+    ctx.note(shape.conversion + read.str());
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
   }
