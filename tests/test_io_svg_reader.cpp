@@ -799,6 +799,15 @@ BOOST_AUTO_TEST_CASE(use_cycles_depth_and_count_are_bounded) {
   }
   laughs += "</defs><use id=\"all\" href=\"#g6\"/>";
   BOOST_TEST(contains(error_of(doc(laughs), "all"), "draws more than 100000 shapes (through nested <use>)"));
+  // The walk below the selection (near without an id: the whole document) is bounded in depth, not a stack
+  // overflow: 5000 nested groups.
+  std::string nested;
+  for (int k = 0; k < 5000; ++k) nested += "<g>";
+  nested += "<path d=\"M 0 0 L 1 0\"/>";
+  for (int k = 0; k < 5000; ++k) nested += "</g>";
+  SvgReadOptions anywhere;
+  anywhere.near = V(0, 0);
+  BOOST_TEST(contains(error_of(doc(nested), "", anywhere), "is nested more than 2000 elements deep below the selected element"));
   BOOST_TEST(contains(error_of(doc("<use id=\"a\" href=\"#nothing\"/>"), "a"), "references \"#nothing\", which is not in the file"));
   BOOST_TEST(contains(error_of(doc("<use id=\"a\" href=\"other.svg#x\"/>"), "a"), "outside this file"));
 }

@@ -497,53 +497,75 @@ struct Drawn {
   Affine to_root;                      // the element's user coordinates -> the root's user coordinates
   std::size_t transforms = 0;          // transform attributes applied (for --verbose)
   std::string via;                     // " (drawn by line 20, use "u1")" for a clone, else ""
-  std::vector<pugi::xml_node> owners;  // the element and what draws it in the document tree, innermost first
+  std::size_t owner = 0;               // its innermost owner in Owners (below)
 };
 
-/// Bounds of <use> expansion (clones of clones multiply): depth and the count of drawn shapes.
+/// What draws each shape in the document tree (the element itself, its groups, the outermost <use> of a clone
+/// and that <use>'s groups): a list of (element, index of the next owner outwards), shared by all shapes.
+struct Owners {
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::pair<pugi::xml_node, std::size_t>> links;
+
+  std::size_t add(const pugi::xml_node& n, std::size_t outer) {
+    links.emplace_back(n, outer);
+    return links.size() - 1;
+  }
+};
+
+/// Shapes drawn and their owners.
+struct DrawnSet {
+  std::vector<Drawn> drawn;
+  Owners owners;
+};
+
+/// Bounds of the walk: <use> nesting (clones of clones multiply), the count of drawn shapes, and the nesting of
+/// elements below the selected one (the walk recurses).
 constexpr std::size_t kMaxUseDepth = 32;
 constexpr std::size_t kMaxDrawn = 100000;
+constexpr std::size_t kMaxNesting = 2000;
 
 /// Walks the rendering tree below an element, expanding <use> and <switch> (SVG 1.1, 5.6, 5.8.2).
 class DrawnCollector {
  public:
   explicit DrawnCollector(const Document& doc) : doc_(doc) {}
 
-  /// The element drawn with `parent` mapping its parent's coordinates to the root's. `owners`: its ancestors
-  /// in the document tree that draw it (innermost first), when it is drawn in place.
-  void element(const pugi::xml_node& n, const Affine& parent, std::size_t transforms,
-               const std::vector<pugi::xml_node>& owners) {
+  /// The element drawn with `parent` mapping its parent's coordinates to the root's. `owner`: its innermost
+  /// ancestor in the document tree that draws it (in set.owners), when it is drawn in place.
+  void element(const pugi::xml_node& n, const Affine& parent, std::size_t transforms, std::size_t owner,
+               std::size_t depth = 0) {
     const std::string kind = local_name(n);
+    if (depth > kMaxNesting)
+      doc_.where(n).fail("is nested more than " + std::to_string(kMaxNesting) + " elements deep below the selected "
+                         "element, which rollkin does not walk; select an element further in, or ungroup in the editor");
     if (kind == "svg" && n != doc_.root)
       doc_.where(n).fail("is a nested <svg> viewport, which rollkin does not apply; ungroup it in the editor");
     const bool container = kind == "g" || kind == "a" || kind == "switch" || kind == "svg";
     if (!container && !is_shape(kind) && kind != "use") return;  // not drawn, or nothing with a contour
-    std::vector<pugi::xml_node> mine = owners;
-    if (uses_.empty()) mine.insert(mine.begin(), n);
+    const std::size_t mine = uses_.empty() ? set.owners.add(n, owner) : owner;
     const Affine m = parent * own_transform(n, doc_, transforms);
     if (is_shape(kind)) {
-      if (out.size() >= kMaxDrawn)
+      if (set.drawn.size() >= kMaxDrawn)
         doc_.where(n).fail("draws more than " + std::to_string(kMaxDrawn) + " shapes (through nested <use>); "
                            "select one group or clone by its id");
-      out.push_back({n, m, transforms, via_, uses_.empty() ? mine : use_owners_});
+      set.drawn.push_back({n, m, transforms, via_, uses_.empty() ? mine : use_owner_});
       return;
     }
-    if (kind == "use") return use(n, m, transforms, mine);
+    if (kind == "use") return use(n, m, transforms, mine, depth);
     if (const std::string e = unexpanded_entity(doc_, n); !e.empty()) doc_.where(n).fail(e);
     if (kind == "switch") {
-      if (const pugi::xml_node c = switch_choice(n, doc_)) element(c, m, transforms, mine);
+      if (const pugi::xml_node c = switch_choice(n, doc_)) element(c, m, transforms, mine, depth + 1);
       return;
     }
     for (const pugi::xml_node c : n.children())
-      if (c.type() == pugi::node_element) element(c, m, transforms, mine);
+      if (c.type() == pugi::node_element) element(c, m, transforms, mine, depth + 1);
   }
 
-  std::vector<Drawn> out;
+  DrawnSet set;
 
  private:
   /// <use>: its transform, then translate(x, y) (SVG 2, 5.6), then the referenced element, or a <symbol>'s
   /// children through its viewBox (SVG 1.1, 5.5 and 7.8).
-  void use(const pugi::xml_node& n, Affine m, std::size_t transforms, const std::vector<pugi::xml_node>& owners) {
+  void use(const pugi::xml_node& n, Affine m, std::size_t transforms, std::size_t owner, std::size_t depth) {
     const Where where = doc_.where(n);
     const std::string href = href_of(n);
     if (href.empty()) where.fail("has no href; expected href=\"#id\" of the element it clones");
@@ -567,16 +589,16 @@ class DrawnCollector {
     m = m * Affine::translate(user_length(n, "x", where, 0.0), user_length(n, "y", where, 0.0));
     const pugi::xml_node t = target->second.front();
     const std::string saved_via = via_;
-    if (uses_.empty()) use_owners_ = owners;
+    if (uses_.empty()) use_owner_ = owner;
     via_ = " (drawn by " + doc_.location(n) + ")" + via_;
     uses_.push_back(n);
     if (local_name(t) == "symbol") {
       m = m * own_transform(t, doc_, transforms) * symbol_viewbox(n, t);
       if (const std::string e = unexpanded_entity(doc_, t); !e.empty()) doc_.where(t).fail(e);
       for (const pugi::xml_node c : t.children())
-        if (c.type() == pugi::node_element) element(c, m, transforms, owners);
+        if (c.type() == pugi::node_element) element(c, m, transforms, owner, depth + 1);
     } else {
-      element(t, m, transforms, owners);
+      element(t, m, transforms, owner, depth + 1);
     }
     uses_.pop_back();
     via_ = saved_via;
@@ -613,7 +635,7 @@ class DrawnCollector {
 
   const Document& doc_;
   std::vector<pugi::xml_node> uses_;        // the <use> elements being expanded, outermost first
-  std::vector<pugi::xml_node> use_owners_;  // owners of the outermost <use> being expanded
+  std::size_t use_owner_ = Owners::none;    // the outermost <use> being expanded, in set.owners
   std::string via_;
 };
 
@@ -634,7 +656,7 @@ std::string uses_of(const Document& doc, const pugi::xml_node& n) {
 
 /// The shapes the element `selected` draws where it stands in the document: its ancestors' transforms
 /// (innermost first, SVG 1.1, 7.5) applied, checked to draw it at all.
-std::vector<Drawn> drawn_by(const Document& doc, const pugi::xml_node& selected) {
+DrawnSet drawn_by(const Document& doc, const pugi::xml_node& selected) {
   Affine m;
   std::size_t transforms = 0;
   std::vector<pugi::xml_node> ancestors;
@@ -661,19 +683,21 @@ std::vector<Drawn> drawn_by(const Document& doc, const pugi::xml_node& selected)
   }
   if (doc.root.attribute("transform")) own_transform(doc.root, doc, transforms);
   DrawnCollector collect(doc);
-  collect.element(selected, m, transforms, ancestors);
-  return std::move(collect.out);
+  std::size_t owner = Owners::none;
+  for (auto a = ancestors.rbegin(); a != ancestors.rend(); ++a) owner = collect.set.owners.add(*a, owner);
+  collect.element(selected, m, transforms, owner);
+  return std::move(collect.set);
 }
 
 /// Everything the document draws.
-std::vector<Drawn> drawn_in_document(const Document& doc) {
+DrawnSet drawn_in_document(const Document& doc) {
   std::size_t transforms = 0;
   own_transform(doc.root, doc, transforms);
   DrawnCollector collect(doc);
   if (const std::string e = unexpanded_entity(doc, doc.root); !e.empty()) doc.where(doc.root).fail(e);
   for (const pugi::xml_node c : doc.root.children())
-    if (c.type() == pugi::node_element) collect.element(c, Affine{}, 0, {});
-  return std::move(collect.out);
+    if (c.type() == pugi::node_element) collect.element(c, Affine{}, 0, Owners::none);
+  return std::move(collect.set);
 }
 
 /// The document's <style> sheets must not set CSS transforms (they could apply to any element).
@@ -891,14 +915,14 @@ std::string conversion_line(const SvgShape& shape, std::size_t transforms, const
 
 /// Every subpath of every drawn element, mapped by steps 1-5, with the selector that picks it (its nearest
 /// owner with a unique id and its index among what that owner draws).
-std::vector<SvgShape> drawn_shapes(const Document& doc, const std::vector<Drawn>& drawn, const SvgReadOptions& options) {
+std::vector<SvgShape> drawn_shapes(const Document& doc, const DrawnSet& set, const SvgReadOptions& options) {
   const Viewport vp = root_viewport(doc.root, doc.where(doc.root));
   double unit_factor = 1;
   if (vp.metres && options.metres_per_scene_unit) unit_factor = *vp.metres / *options.metres_per_scene_unit;
   const double k = unit_factor * options.scale;
   std::vector<SvgShape> out;
   std::vector<const Drawn*> from;
-  for (const Drawn& d : drawn) {
+  for (const Drawn& d : set.drawn) {
     const std::string element_at = doc.location(d.element);
     const Where where{doc.file, element_at + d.via};
     const std::string kind = local_name(d.element);
@@ -942,15 +966,18 @@ std::vector<SvgShape> drawn_shapes(const Document& doc, const std::vector<Drawn>
     }
   }
   // Selectors: an owner with a unique id draws the shapes listing it, in this order (drawn_by walks alike).
-  std::map<pugi::xml_node, std::size_t> drawn_count, seen;
+  // Counted per owner link (each link is one element of the document tree, drawing the shapes below it).
+  const auto& links = set.owners.links;
+  std::vector<std::size_t> drawn_count(links.size(), 0), seen(links.size(), 0);
   for (const Drawn* d : from)
-    for (const pugi::xml_node& o : d->owners) ++drawn_count[o];
+    for (std::size_t o = d->owner; o != Owners::none; o = links[o].second) ++drawn_count[o];
   for (std::size_t s = 0; s < out.size(); ++s) {
-    for (const pugi::xml_node& o : from[s]->owners) ++seen[o];
-    for (const pugi::xml_node& o : from[s]->owners) {
-      const auto ids = doc.ids.find(o.attribute("id").value());
-      if (!o.attribute("id") || ids == doc.ids.end() || ids->second.size() != 1) continue;
-      out[s].selector_id = o.attribute("id").value();
+    for (std::size_t o = from[s]->owner; o != Owners::none; o = links[o].second) ++seen[o];
+    for (std::size_t o = from[s]->owner; o != Owners::none; o = links[o].second) {
+      const pugi::xml_node& n = links[o].first;
+      const auto ids = doc.ids.find(n.attribute("id").value());
+      if (!n.attribute("id") || ids == doc.ids.end() || ids->second.size() != 1) continue;
+      out[s].selector_id = n.attribute("id").value();
       out[s].selector_subpath = drawn_count[o] > 1 ? seen[o] : 0;
       break;
     }
