@@ -1068,8 +1068,11 @@ double distance_to(const std::vector<Segment>& segments, const P& q) {
 
 }  // namespace svg_detail
 
-std::vector<SvgShape> read_svg_shapes_from_text(const std::string& text, const std::string& id,
-                                                const SvgReadOptions& options, const std::string& file) {
+namespace {
+
+/// Every subpath the element `id` draws (the document for ""), and the element's location for messages.
+std::vector<SvgShape> shapes_of(const std::string& text, const std::string& id, const SvgReadOptions& options,
+                                const std::string& file, std::string& location) {
   if (!(options.scale > 0) || !std::isfinite(options.scale))
     throw InputError(file, "", "the scale factor must be positive and finite, got " + fmt(options.scale));
   if (options.metres_per_scene_unit && !(*options.metres_per_scene_unit > 0))
@@ -1079,6 +1082,7 @@ std::vector<SvgShape> read_svg_shapes_from_text(const std::string& text, const s
   check_style_sheets(doc);
   if (id.empty()) return drawn_shapes(doc, drawn_in_document(doc), options);
   const pugi::xml_node selected = find_by_id(doc, id);
+  location = doc.location(selected);
   if (selected == doc.root) return drawn_shapes(doc, drawn_in_document(doc), options);
   const std::string kind = local_name(selected);
   if (!is_shape(kind) && kind != "g" && kind != "a" && kind != "use" && kind != "switch")
@@ -1086,6 +1090,14 @@ std::vector<SvgShape> read_svg_shapes_from_text(const std::string& text, const s
                              "ellipse, rect, line, polyline or polygon, or a group or <use> that draws them (convert "
                              "it to a path in the editor: Path > Object to Path)");
   return drawn_shapes(doc, drawn_by(doc, selected), options);
+}
+
+}  // namespace
+
+std::vector<SvgShape> read_svg_shapes_from_text(const std::string& text, const std::string& id,
+                                                const SvgReadOptions& options, const std::string& file) {
+  std::string location;
+  return shapes_of(text, id, options, file, location);
 }
 
 std::vector<SvgShape> read_svg_shapes(const std::string& svg_file, const std::string& id, const SvgReadOptions& options) {
@@ -1097,17 +1109,9 @@ SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id
   if (id.empty() && !options.near)
     throw InputError(file, "", "no element id given; give the id of the element, or \"near\": [x, y] to take the "
                                "subpath of the drawing passing nearest to a point");
-  std::vector<SvgShape> all = read_svg_shapes_from_text(text, id, options, file);
-  std::string location, what = "the document";
-  if (!id.empty()) {
-    // The element's own location for the messages about the choice.
-    pugi::xml_document xml;
-    const Document doc(text, file, parse_document(xml, text, file));
-    const pugi::xml_node n = find_by_id(doc, id);
-    location = doc.location(n);
-    what = "the element";
-  }
-  return select_shape(std::move(all), options, file, location, what);
+  std::string location;
+  std::vector<SvgShape> all = shapes_of(text, id, options, file, location);
+  return select_shape(std::move(all), options, file, location, id.empty() ? "the document" : "the element");
 }
 
 SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, const SvgReadOptions& options) {
