@@ -23,6 +23,11 @@ Moves and zero-length closes are left out; a second Move is printed as "M" (more
 With several ids (comma-separated), each element's lines follow a line "P ID".
 With ID "*", every shape the document draws (svgelements expands <use> clones, the referenced content drawn
 as children of the <use>), in document order, each after a line "P ID" (its own id, repeated for clones).
+There svgelements deviates from SVG (svgelements 1.7.2; these cases are checked by hand in
+test_io_svg_reader.cpp, "use_symbol_viewbox_and_transform_origin_by_hand" and the <switch> tests): the second
+and later <use> of the same group are offset by the earlier clones' x/y; a clone of a clone is misplaced; a
+<use> of an element defined later in the file draws nothing; a <symbol>'s viewBox is not applied; every child
+of a <switch> is drawn; transform-origin is ignored.
 With "map", svgelements reads the path data (arc centres and sweeps by its own F.6.5) and composes the
 element's transforms, and the script maps the untransformed segments by that matrix: control points, and an
 arc's centre and semi-axis end points (an affine map keeps the eccentric parameterisation, so the sweep is
