@@ -686,6 +686,9 @@ BOOST_AUTO_TEST_CASE(subpath_and_near_select_one_subpath) {
   o.near = V(19, -1);  // scene coordinates (after the flip): 1 left of the third square
   BOOST_TEST(read_svg_shape_from_text(d, "p", o).segments.front().points.front() == V(20, 0));
   BOOST_TEST(read_svg_shape_from_text(d, "", o).segments.front().points.front() == V(20, 0));  // the whole document
+  SvgReadOptions third;
+  third.subpath = 3;
+  BOOST_TEST(read_svg_shape_from_text(d, "", third).segments.front().points.front() == V(20, 0));
   o.near = V(6, -1);   // 4 from the first square and 4 from the second
   BOOST_TEST(contains(error_of(d, "p", o), "near (6, -1) is about equally near line 3, path \"p\", subpath 1 (distance 4) "
                                            "and line 3, path \"p\", subpath 2 (distance 4)"));

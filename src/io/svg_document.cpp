@@ -1106,9 +1106,9 @@ std::vector<SvgShape> read_svg_shapes(const std::string& svg_file, const std::st
 
 SvgShape read_svg_shape_from_text(const std::string& text, const std::string& id, const SvgReadOptions& options,
                                   const std::string& file) {
-  if (id.empty() && !options.near)
-    throw InputError(file, "", "no element id given; give the id of the element, or \"near\": [x, y] to take the "
-                               "subpath of the drawing passing nearest to a point");
+  if (id.empty() && !options.near && !options.subpath)
+    throw InputError(file, "", "no element id given; give the id of the element, or \"near\": [x, y] (or \"subpath\": "
+                               "k) to take the subpath of the drawing passing nearest to a point (or its k-th)");
   std::string location;
   std::vector<SvgShape> all = shapes_of(text, id, options, file, location);
   return select_shape(std::move(all), options, file, location, id.empty() ? "the document" : "the element");

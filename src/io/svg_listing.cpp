@@ -26,7 +26,8 @@ std::vector<P> sampled(const std::vector<BezierSegment<double>>& segments, int p
 }
 
 /// A point on shape k that "near" picks it by: among points along it, the farthest from every other shape;
-/// nullopt when even that one is about equally near another shape (the two coincide there).
+/// nullopt when even that one is about equally near another shape (the two coincide there: the selector is
+/// then its number among all the document draws, "subpath" without "path").
 std::optional<P> near_point(const std::vector<SvgShape>& shapes, std::size_t k) {
   double extent = 0;
   for (const SvgShape& s : shapes) extent = std::max(extent, svg_detail::control_extent(s.segments));
@@ -55,9 +56,10 @@ std::string selector(const std::string& file, const std::vector<SvgShape>& shape
     j["path"] = s.selector_id;
     if (s.selector_subpath) j["subpath"] = s.selector_subpath;
   } else {
-    const std::optional<P> p = near_point(shapes, k);
-    j["near"] = p ? ordered_json::array({p->x(), p->y()}) : ordered_json::array({s.segments.front().points.front().x(),
-                                                                                   s.segments.front().points.front().y()});
+    if (const std::optional<P> p = near_point(shapes, k))
+      j["near"] = ordered_json::array({p->x(), p->y()});
+    else
+      j["subpath"] = k + 1;
   }
   return j.dump();
 }

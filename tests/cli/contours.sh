@@ -30,6 +30,7 @@ cat > anonymous.SVG <<'SVG'
     <g><circle cx="30" cy="70" r="12"/><ellipse cx="170" cy="70" rx="15" ry="8" transform="rotate(20, 170, 70)"/></g>
   </switch>
   <g id="layer"><line x1="0" y1="95" x2="200" y2="95"/><rect x="70" y="50" width="20" height="30" rx="0" ry="5"/></g>
+  <circle cx="185" cy="30" r="6"/><circle cx="185" cy="30" r="6"/>
 </svg>
 SVG
 
@@ -63,6 +64,8 @@ PY
   done <cases.txt
 done
 check "anonymous.SVG: an element without an id is selected by near" $(grep -q '"near":\[' cases.txt; echo $?)
+check "anonymous.SVG: two coinciding elements without an id are selected by their number in the drawing" \
+  $(grep -q '"file":"anonymous.SVG","subpath":8}' cases.txt && grep -q '"file":"anonymous.SVG","subpath":9}' cases.txt; echo $?)
 check "anonymous.SVG: a subpath of an element without an id is selected through its group" \
   $(grep -q '"path":"layer","subpath":2' cases.txt; echo $?)
 

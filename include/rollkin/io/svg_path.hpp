@@ -35,7 +35,7 @@
 // above), or SvgReadOptions::near (the subpath passing nearest to the point, in the coordinates the contour is
 // read in: after steps 1-5; an error naming both when the second nearest is within 1% of the distance, plus
 // 1e-9 of the drawing's size), or the only one; several and no choice is an error listing them. Without an id,
-// near chooses among everything the document draws.
+// subpath and near choose among everything the document draws.
 // The map from the element's coordinates to scene coordinates is, in this order (each an affine map, so
 // rational Bezier control points are mapped exactly and the weights kept):
 //   1. the element's `transform` (about its transform-origin "x y" in user units, CSS Transforms 1, 6.1), then
@@ -134,7 +134,7 @@ std::vector<SvgShape> read_svg_shapes_from_text(const std::string& text, const s
                                                 const SvgReadOptions& options = {}, const std::string& file_label = "");
 
 /// The one subpath the element with the given id draws, or the one options.subpath or options.near choose
-/// (id may be empty with near), mapped into scene units (steps 1-5).
+/// (id may be empty with either: among all the document draws), mapped into scene units (steps 1-5).
 SvgShape read_svg_shape(const std::string& svg_file, const std::string& id, const SvgReadOptions& options = {});
 
 /// The same from the document's text (bytes); `file_label` names the source in messages.

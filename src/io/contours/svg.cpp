@@ -18,9 +18,9 @@ std::string element_id(const json& c, const std::string& path, const JsonAccess&
   const json* i = js.get(c, "id");
   if (p && i) js.fail(child(path, "id"), "give the element id once: \"path\" and its alias \"id\" are both present");
   if (!p && !i) {
-    if (js.get(c, "near")) return "";
+    if (js.get(c, "near") || js.get(c, "subpath")) return "";  // among everything the drawing draws
     js.fail(path, "missing key \"path\": expected the id of the SVG element (path, circle, ellipse, rect, line, "
-                  "polyline, polygon, or a group or <use> drawing them), or \"near\": [x, y]");
+                  "polyline, polygon, or a group or <use> drawing them), or \"near\": [x, y] or \"subpath\": k");
   }
   const std::string key = p ? "path" : "id";
   const std::string id = js.string(p ? *p : *i, child(path, key), "an element id");
