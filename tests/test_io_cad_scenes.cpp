@@ -426,6 +426,30 @@ BOOST_AUTO_TEST_CASE(dxf_selection_and_reader_errors_name_the_json_path) {
   BOOST_TEST(contains(msg, "gap"));
 }
 
+BOOST_AUTO_TEST_CASE(svg_selection_errors_name_the_json_path) {
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& contour) { return replaced(base, "\"type\": \"circle\", \"radius\": 1}", contour); };
+  const std::string svg = write_text(scratch_dir("io_cad_scenes") / "holes.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<path id=\"plate\" d=\"M 0 0 h 4 v 4 h -4 z M 1 1 h 1 v 1 h -1 z\"/>\n</svg>\n");
+  const std::string file = "\"type\": \"svg\", \"file\": \"" + svg + "\"";
+  std::string msg = input_error_of([&] { scene_from("zero.json", with(file + ", \"path\": \"plate\", \"subpath\": 0}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: expected a whole number from 1 (subpaths count from 1), got 0"));
+  msg = input_error_of([&] { scene_from("half.json", with(file + ", \"path\": \"plate\", \"subpath\": 1.5}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: expected a whole number from 1"));
+  msg = input_error_of([&] { scene_from("both.json", with(file + ", \"subpath\": 1, \"near\": [0, 0]}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: give \"subpath\" or \"near\", not both"));
+  msg = input_error_of([&] { scene_from("none.json", with(file + ", \"path\": \"plate\"}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "the element draws 2 subpath(s): 1: line 2, path \"plate\", subpath 1 (closed, from (0, 0)); 2: "
+                           "line 2, path \"plate\", subpath 2 (closed, from (1, -1)); select one with \"subpath\": k (1 to 2)"));
+  msg = input_error_of([&] { scene_from("three.json", with(file + ", \"path\": \"plate\", \"subpath\": 3}")); });
+  BOOST_TEST(contains(msg, "subpath 3 does not exist"));
+  msg = input_error_of([&] { scene_from("nothing.json", with(file + "}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0]: missing key \"path\""));
+  msg = input_error_of([&] { scene_from("badnear.json", with(file + ", \"near\": [1]}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].near"));
+}
+
 BOOST_AUTO_TEST_CASE(invalid_nurbs_is_an_error_naming_the_json_path) {
   const std::string base = read_text(kExamples + "cycloid.json");
   auto with = [&](const std::string& contour) { return replaced(base, "\"type\": \"circle\", \"radius\": 1}", contour); };
