@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace rollkin::io {
@@ -47,6 +48,30 @@ std::optional<P> near_point(const std::vector<SvgShape>& shapes, std::size_t k) 
   return best;
 }
 
+/// The bounding box of the segments: per segment and coordinate, the largest and smallest of 32 samples, each
+/// refined by a golden-section search between its neighbours (the curve's extremes, to round-off).
+void bounding_box(const std::vector<BezierSegment<double>>& segments, P& lo, P& hi) {
+  constexpr int kSamples = 32;
+  lo = hi = segments.front().points.front();
+  for (const auto& s : segments)
+    for (int axis = 0; axis < 2; ++axis)
+      for (const double sign : {1.0, -1.0}) {  // +1: the largest, -1: the smallest
+        auto value = [&](double t) { return sign * svg_detail::point_at(s, t)[axis]; };
+        int at = 0;
+        for (int i = 1; i <= kSamples; ++i)
+          if (value(double(i) / kSamples) > value(double(at) / kSamples)) at = i;
+        double a = std::max(0, at - 1) / double(kSamples), b = std::min(kSamples, at + 1) / double(kSamples);
+        const double g = (std::sqrt(5.0) - 1) / 2;
+        for (int it = 0; it < 80 && b - a > 1e-16; ++it) {
+          const double c = b - g * (b - a), e = a + g * (b - a);
+          if (value(c) > value(e)) b = e; else a = c;
+        }
+        const double extreme = sign * std::max({value(double(at) / kSamples), value((a + b) / 2)});
+        lo[axis] = std::min(lo[axis], extreme);
+        hi[axis] = std::max(hi[axis], extreme);
+      }
+}
+
 std::string selector(const std::string& file, const std::vector<SvgShape>& shapes, std::size_t k) {
   ordered_json j;
   j["type"] = "svg";
@@ -78,12 +103,7 @@ std::vector<ListedChain> list_svg_contours(const std::string& path) {
     c.entities = {s.subpaths > 1 ? "subpath " + std::to_string(s.subpath) : s.element};
     c.closed = s.closed;
     c.length = svg_bezier_path(s).total_length();
-    const std::vector<P> points = sampled(s.segments, 32);
-    c.min = c.max = points.front();
-    for (const P& p : points) {
-      c.min = c.min.cwiseMin(p);
-      c.max = c.max.cwiseMax(p);
-    }
+    bounding_box(s.segments, c.min, c.max);
     c.corners = s.corners.size();
     c.segments = s.segments;
     c.selector = selector(path, shapes, k);

@@ -43,6 +43,15 @@ def test_contours_of_an_svg_drawing_match_closed_forms(tmp_path):
     assert plate_outline["selector"] == {"type": "svg", "file": str(drawing), "path": "plate", "subpath": 1}
     # The open polyline of the symbol, cloned with scale(1.5): two edges of 3 sqrt(2) each, scaled by
     # (1.25 * 1.5, 0.8 * 1.5) = (1.875, 1.2).
+    # The symbol's ellipse (rx 4, ry 2.5, rotate(-30)) cloned with scale(1.5) at (60, 200): its box is exact,
+    # half-extents sqrt((4 L[i][0])^2 + (2.5 L[i][1])^2) of the linear map L = diag(1.25, 0.8) 1.5 R(-30 deg).
+    c, s_ = math.cos(math.radians(-30)), math.sin(math.radians(-30))
+    L = [[1.25 * 1.5 * c, -1.25 * 1.5 * s_], [0.8 * 1.5 * s_, 0.8 * 1.5 * c]]
+    half = [math.hypot(4 * L[i][0], 2.5 * L[i][1]) for i in range(2)]
+    centre = (20 + 1.25 * 1.5 * 60, -(15 + 0.8 * 1.5 * 200))
+    ring = chains[8]
+    assert ring["min"] == pytest.approx((centre[0] - half[0], centre[1] - half[1]), rel=1e-13)
+    assert ring["max"] == pytest.approx((centre[0] + half[0], centre[1] + half[1]), rel=1e-13)
     tick = chains[9]
     assert not tick["closed"] and tick["corners"] == 1
     assert tick["length"] == pytest.approx(2 * math.hypot(3 * 1.875, 3 * 1.2), rel=1e-14)
