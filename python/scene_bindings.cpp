@@ -1,7 +1,9 @@
 // Scenes in the Python module: loaded from a file or built from a dict, pickled as their JSON document,
-// modified by JSON path, and the contour dicts samples() and nurbs() build from NumPy arrays.
+// modified by JSON path, the contour dicts samples() and nurbs() build from NumPy arrays, and the listing of a
+// drawing's contours (contours(), as `rollkin contours --json`).
 #include "bindings.hpp"
 
+#include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/json_document.hpp"
 
 #include <algorithm>
@@ -144,6 +146,29 @@ py::object sweep_dict(const PyScene& s) {
   return std::move(d);
 }
 
+/// The chains of a DXF or SVG drawing as dicts with the fields of `rollkin contours --json`.
+py::list contours(const py::object& path) {
+  const std::string file = path_argument(path, "path");
+  const std::vector<rollkin::io::ListedChain> chains = interruptible<std::vector<rollkin::io::ListedChain>>(
+      [file](const std::atomic<bool>&) { return rollkin::io::list_contours(file); });
+  py::list out;
+  for (const rollkin::io::ListedChain& c : chains) {
+    py::dict d;
+    d["group"] = text_of(c.group);
+    py::list entities;
+    for (const std::string& e : c.entities) entities.append(text_of(e));
+    d["entities"] = entities;
+    d["closed"] = c.closed;
+    d["length"] = c.length;
+    d["min"] = py::make_tuple(c.min.x(), c.min.y());
+    d["max"] = py::make_tuple(c.max.x(), c.max.y());
+    d["corners"] = c.corners;
+    d["selector"] = to_python(json::parse(c.selector));
+    out.append(d);
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_scenes(py::module_& m, py::class_<PyScene>& scene) {
@@ -173,6 +198,13 @@ void bind_scenes(py::module_& m, py::class_<PyScene>& scene) {
         "resolved against base_dir (default: the current directory); `name` names the scene in messages (default\n"
         "\"<dict>\") and, as the scene's file, is never written over by write() or centrodes(dxf=).\n"
         "Raises InputError naming the JSON path of a bad value (NaN and infinities are not JSON numbers).");
+  m.def("contours", &contours, py::arg("path"),
+        "What a DXF or SVG drawing offers as contours, as `rollkin contours FILE --json` lists it: one dict per chain\n"
+        "with group (DXF layer, SVG element), entities, closed, length, min and max (bounding box corners), corners\n"
+        "(tangent discontinuities) and selector (the contour dict that selects exactly this chain: add a \"name\"\n"
+        "and put it in a scene's contours). Drawing units; SVG: viewport units with y up. Raises InputError for a\n"
+        "file that cannot be read or is neither .dxf nor .svg.\n"
+        "    for c in rollkin.contours(\"plate.svg\"): print(c[\"length\"], c[\"selector\"])");
   m.def("samples", &samples, py::arg("xy"), py::arg("name") = "samples",
         "A sampled contour (type \"samples\", docs/scene_format.md) from an (n, 2) array of x, y rows, as the dict\n"
         "a scene's contour list takes; keyword arguments add the contour's other keys (closed, smoothing, scale,\n"

@@ -191,33 +191,57 @@ BOOST_AUTO_TEST_CASE(disk_and_track_picked_by_near_from_a_shared_layer_roll_as_t
 BOOST_AUTO_TEST_CASE(svg_circle_in_transformed_groups_matches_the_analytic_cycloid) {
   // Centre: scale(2) then rotate(30) keep (0, 0); translate(50 50) moves it to (50, 50) mm, flipped (50, -50)
   // mm = (5, -5) cm, put back on the link's origin by "at". Radius 2 * 5 mm = 1 cm.
-  const std::string svg =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">\n"
-      "  <g transform=\"translate(50 50) rotate(30)\">\n"
-      "    <g transform=\"scale(2)\"><circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/></g>\n"
-      "  </g>\n"
-      "</svg>\n";
-  const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / "disk.svg", svg);
+  // The same disk drawn as a drawing holds it: a <use> clone of a circle in <defs>; in a group with its hub
+  // (radius 2 mm) selected by "subpath" and by "near" (in the contour's coordinates: cm, y up, before "at"); as
+  // the second subpath of a compound path (the hub first); inside Illustrator's <switch>.
+  struct Variant {
+    std::string name, drawing, selector;
+  };
+  const std::string hub = "<circle cx=\"0\" cy=\"0\" r=\"1\"/>";
+  const std::vector<Variant> variants = {
+      {"circle", "<circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/>", "\"path\": \"disk\""},
+      {"use", "<defs><circle id=\"proto\" r=\"5\"/></defs><use id=\"disk\" href=\"#proto\"/>", "\"path\": \"disk\""},
+      {"group_subpath", "<g id=\"part\">" + hub + "<circle cx=\"0\" cy=\"0\" r=\"5\"/></g>", "\"path\": \"part\", \"subpath\": 2"},
+      {"group_near", "<g id=\"part\">" + hub + "<circle cx=\"0\" cy=\"0\" r=\"5\"/></g>", "\"near\": [5.6, -4.3]"},
+      {"compound", "<path id=\"part\" d=\"M 1 0 A 1 1 0 0 1 -1 0 A 1 1 0 0 1 1 0 Z M 5 0 A 5 5 0 0 1 -5 0 A 5 5 0 0 1 5 0 Z\"/>",
+       "\"path\": \"part\", \"subpath\": 2"},
+      {"switch", "<switch><foreignObject requiredExtensions=\"http://ns.adobe.com/AdobeIllustrator/10.0/\"/>"
+                 "<g><circle id=\"disk\" cx=\"0\" cy=\"0\" r=\"5\"/></g></switch>", "\"path\": \"disk\""}};
   std::string analytic_text = replaced(read_text(kExamples + "cycloid.json"), "\"length\": \"m\"", "\"length\": \"cm\"");
-  std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}",
-                              "\"type\": \"svg\", \"file\": \"" + svg_file + "\", \"path\": \"disk\", \"at\": {\"x\": -5, \"y\": 5}}");
   const io::Scene analytic = scene_from("cycloid_cm.json", analytic_text);
-  const io::Scene s = scene_from("cycloid_svg.json", text);
-  const auto ra = solved(analytic), rs = solved(s);
-  const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+  const auto ra = solved(analytic);
   const int turn_a = analytic.mechanism.find_variable("H.psi");
-  // Disk angles counted from the first pose (s = 0): the SVG circle's start point is rotated by the groups,
-  // so the rim point the assembly puts in contact, and with it the initial psi, may differ.
-  const double psi0 = rs.poses.front().q(turn), psi0_a = ra.poses.front().q(turn_a);
-  double worst = 0, closed_form = 0;
-  for (std::size_t k = 0; k < rs.poses.size(); ++k) {
-    const double dpsi = rs.poses[k].q(turn) - psi0;
-    worst = std::max(worst, std::abs(dpsi - (ra.poses[k].q(turn_a) - psi0_a)));
-    closed_form = std::max(closed_form, std::abs(dpsi + rs.poses[k].q(travel)));
+  for (const Variant& v : variants) {
+    BOOST_TEST_CONTEXT(v.name) {
+      const std::string svg =
+          "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">\n"
+          "  <g transform=\"translate(50 50) rotate(30)\">\n"
+          "    <g transform=\"scale(2)\">" + v.drawing + "</g>\n"
+          "  </g>\n"
+          "</svg>\n";
+      const std::string svg_file = write_text(scratch_dir("io_cad_scenes") / ("disk_" + v.name + ".svg"), svg);
+      const std::string text = replaced(analytic_text, "\"type\": \"circle\", \"radius\": 1}",
+                                        "\"type\": \"svg\", \"file\": \"" + svg_file + "\", " + v.selector +
+                                            ", \"at\": {\"x\": -5, \"y\": 5}}");
+      const io::Scene s = scene_from("cycloid_svg_" + v.name + ".json", text);
+      const auto rs = solved(s);
+      const int travel = s.mechanism.find_variable("S.s"), turn = s.mechanism.find_variable("H.psi");
+      // Disk angles counted from the first pose (s = 0): the SVG circle's start point is rotated by the groups,
+      // so the rim point the assembly puts in contact, and with it the initial psi, may differ.
+      const double psi0 = rs.poses.front().q(turn), psi0_a = ra.poses.front().q(turn_a);
+      double worst = 0, closed_form = 0;
+      BOOST_REQUIRE_EQUAL(rs.poses.size(), ra.poses.size());
+      for (std::size_t k = 0; k < rs.poses.size(); ++k) {
+        const double dpsi = rs.poses[k].q(turn) - psi0;
+        worst = std::max(worst, std::abs(dpsi - (ra.poses[k].q(turn_a) - psi0_a)));
+        closed_form = std::max(closed_form, std::abs(dpsi + rs.poses[k].q(travel)));
+      }
+      BOOST_TEST_MESSAGE("cycloid from SVG (" << v.name << "): vs analytic " << worst << " rad, vs closed form "
+                                              << closed_form << " rad");
+      BOOST_TEST(worst < 1e-9 * kDeg);
+      BOOST_TEST(closed_form < 1e-9 * kDeg);
+    }
   }
-  BOOST_TEST_MESSAGE("cycloid from SVG: vs analytic " << worst << " rad, vs closed form " << closed_form << " rad");
-  BOOST_TEST(worst < 1e-9 * kDeg);
-  BOOST_TEST(closed_form < 1e-9 * kDeg);
 }
 
 // A straight run drawn through many collinear vertices of different spacing is one line: a disk rolls along
@@ -457,6 +481,30 @@ BOOST_AUTO_TEST_CASE(dxf_selection_and_reader_errors_name_the_json_path) {
   msg = input_error_of([&] { scene_from("gap.json", with("\"type\": \"dxf\", \"file\": \"" + kDxf + "errors.dxf\", \"layer\": \"GAP\"}")); });
   BOOST_TEST(contains(msg, "links[2].contours[0].file"));
   BOOST_TEST(contains(msg, "form 2 chains"));
+}
+
+BOOST_AUTO_TEST_CASE(svg_selection_errors_name_the_json_path) {
+  const std::string base = read_text(kExamples + "cycloid.json");
+  auto with = [&](const std::string& contour) { return replaced(base, "\"type\": \"circle\", \"radius\": 1}", contour); };
+  const std::string svg = write_text(scratch_dir("io_cad_scenes") / "holes.svg",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<path id=\"plate\" d=\"M 0 0 h 4 v 4 h -4 z M 1 1 h 1 v 1 h -1 z\"/>\n</svg>\n");
+  const std::string file = "\"type\": \"svg\", \"file\": \"" + svg + "\"";
+  std::string msg = input_error_of([&] { scene_from("zero.json", with(file + ", \"path\": \"plate\", \"subpath\": 0}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: expected a whole number from 1 (subpaths count from 1), got 0"));
+  msg = input_error_of([&] { scene_from("half.json", with(file + ", \"path\": \"plate\", \"subpath\": 1.5}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: expected a whole number from 1"));
+  msg = input_error_of([&] { scene_from("both.json", with(file + ", \"subpath\": 1, \"near\": [0, 0]}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].subpath: give \"subpath\" or \"near\", not both"));
+  msg = input_error_of([&] { scene_from("none.json", with(file + ", \"path\": \"plate\"}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].file"));
+  BOOST_TEST(contains(msg, "the element draws 2 subpath(s): 1: line 2, path \"plate\", subpath 1 (closed, from (0, 0)); 2: "
+                           "line 2, path \"plate\", subpath 2 (closed, from (1, -1)); select one with \"subpath\": k (1 to 2)"));
+  msg = input_error_of([&] { scene_from("three.json", with(file + ", \"path\": \"plate\", \"subpath\": 3}")); });
+  BOOST_TEST(contains(msg, "subpath 3 does not exist"));
+  msg = input_error_of([&] { scene_from("nothing.json", with(file + "}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0]: missing key \"path\""));
+  msg = input_error_of([&] { scene_from("badnear.json", with(file + ", \"near\": [1]}")); });
+  BOOST_TEST(contains(msg, "links[2].contours[0].near"));
 }
 
 BOOST_AUTO_TEST_CASE(invalid_nurbs_is_an_error_naming_the_json_path) {

@@ -374,7 +374,7 @@ BOOST_AUTO_TEST_CASE(fixed_ranges_steps_and_errors) {
   BOOST_TEST(contains_text(els, "270"));
   BOOST_TEST(!contains_text(els, "s"));  // no legend
   BOOST_CHECK_THROW(chart.add_series("bad", {1, 2}, {1}), std::invalid_argument);
-  BOOST_CHECK_THROW(chart.set_y_range(1, 1), std::invalid_argument);
+  BOOST_CHECK_THROW(chart.set_y_range(2, 1), std::invalid_argument);  // reversed (equal ends are widened)
   // Empty chart still renders a valid document.
   BOOST_TEST(parse_xml(SvgChart().to_svg()).size() > 1u);
 }
@@ -491,7 +491,33 @@ BOOST_AUTO_TEST_CASE(closed_polyline_with_break_and_fixed_box) {
   one.add_point({3, 4});
   BOOST_TEST(std::isfinite(one.scale()));
   BOOST_TEST(one.to_pixel({3, 4}).x() == 400.0, boost::test_tools::tolerance(1e-9));
-  BOOST_CHECK_THROW(d.set_world_box(0, 0, 0, 1), std::invalid_argument);
+  BOOST_CHECK_THROW(d.set_world_box(1, 0, 0, 1), std::invalid_argument);    // reversed
+  BOOST_CHECK_THROW(d.set_world_box(0, 0, kNaN, 1), std::invalid_argument);
+}
+
+// The box of a drawing whose only contour is a straight line parallel to an axis has zero height (or width):
+// widened by 5% of the other extent on each side, so the line sets the scale and sits in the middle; a point
+// by 10% of its largest coordinate (at least 1). Before, set_world_box refused it ("need finite xmin < xmax")
+// and `rollkin solve --draw` failed.
+BOOST_AUTO_TEST_CASE(degenerate_world_boxes_are_widened_relative_to_the_drawing) {
+  SvgDrawing d(300, 300, 10);  // 280 x 280 px inside the margins
+  d.set_world_box(0, 2, 10, 2);
+  BOOST_TEST(d.scale() == 28.0, boost::test_tools::tolerance(1e-12));  // 280 px / 10 (x) < 280 px / 1 (y)
+  BOOST_TEST((d.to_pixel({5, 2}) - Eigen::Vector2d(150, 150)).norm() < 1e-9);
+  SvgDrawing v(300, 300, 10);
+  v.set_world_box(3, -4, 3, 6);
+  BOOST_TEST(v.scale() == 28.0, boost::test_tools::tolerance(1e-12));
+  SvgDrawing p(300, 300, 10);
+  p.set_world_box(3, 4, 3, 4);  // pad max(1, 0.4) = 1: a 2 x 2 box
+  BOOST_TEST(p.scale() == 140.0, boost::test_tools::tolerance(1e-12));
+  // The fitted box follows the same rule: a horizontal line drawn alone.
+  SvgDrawing f(300, 300, 10);
+  f.add_polyline({{0, 2}, {10, 2}});
+  BOOST_TEST(f.scale() == 28.0, boost::test_tools::tolerance(1e-12));
+  // A chart's fixed range of zero width is widened like a fitted one.
+  SvgChart chart;
+  BOOST_CHECK_NO_THROW(chart.set_x_range(5, 5));
+  BOOST_CHECK_THROW(chart.set_x_range(6, 5), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -231,16 +231,18 @@ SvgChart& SvgChart::set_y_label(std::string label) {
   return *this;
 }
 SvgChart& SvgChart::set_x_range(double lo, double hi) {
-  if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi))
-    throw std::invalid_argument("SvgChart::set_x_range: need finite lo < hi");
+  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi))
+    throw std::invalid_argument("SvgChart::set_x_range: need finite lo <= hi");
+  sanitize(lo, hi);  // lo == hi (a constant): widened around the value, as the fitted ranges are
   x_fixed_ = true;
   x_lo_ = lo;
   x_hi_ = hi;
   return *this;
 }
 SvgChart& SvgChart::set_y_range(double lo, double hi) {
-  if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi))
-    throw std::invalid_argument("SvgChart::set_y_range: need finite lo < hi");
+  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi))
+    throw std::invalid_argument("SvgChart::set_y_range: need finite lo <= hi");
+  sanitize(lo, hi);  // lo == hi (a constant): widened around the value, as the fitted ranges are
   y_fixed_ = true;
   y_lo_ = lo;
   y_hi_ = hi;
@@ -472,12 +474,33 @@ SvgDrawing& SvgDrawing::set_background(std::string color) {
   background_ = std::move(color);
   return *this;
 }
+namespace {
+
+/// A world box made drawable (xmin, ymin, xmax, ymax): an extent that is zero or round-off (1e-12) relative to
+/// the box's size, e.g. a straight line parallel to an axis, gets 5% of the other extent on each side; a point
+/// (both extents zero) gets 10% of its largest coordinate, at least 1, on every side. The larger extent keeps
+/// setting the scale.
+Eigen::Vector4d drawable_box(Eigen::Vector4d b) {
+  const double w = b[2] - b[0], h = b[3] - b[1];
+  const double size = std::max(w, h), magnitude = b.cwiseAbs().maxCoeff();
+  const double round_off = 1e-12 * std::max(size, magnitude);
+  if (size <= round_off) {
+    const double pad = std::max(1.0, 0.1 * magnitude);
+    return b + Eigen::Vector4d(-pad, -pad, pad, pad);
+  }
+  if (w <= round_off) b += Eigen::Vector4d(-0.05 * size, 0, 0.05 * size, 0);
+  if (h <= round_off) b += Eigen::Vector4d(0, -0.05 * size, 0, 0.05 * size);
+  return b;
+}
+
+}  // namespace
+
 SvgDrawing& SvgDrawing::set_world_box(double xmin, double ymin, double xmax, double ymax) {
-  if (!(xmin < xmax) || !(ymin < ymax) || !std::isfinite(xmin) || !std::isfinite(xmax) || !std::isfinite(ymin) ||
+  if (!(xmin <= xmax) || !(ymin <= ymax) || !std::isfinite(xmin) || !std::isfinite(xmax) || !std::isfinite(ymin) ||
       !std::isfinite(ymax))
-    throw std::invalid_argument("SvgDrawing::set_world_box: need finite xmin < xmax and ymin < ymax");
+    throw std::invalid_argument("SvgDrawing::set_world_box: need finite xmin <= xmax and ymin <= ymax");
   fixed_box_ = true;
-  box_ = Eigen::Vector4d(xmin, ymin, xmax, ymax);
+  box_ = drawable_box(Eigen::Vector4d(xmin, ymin, xmax, ymax));
   return *this;
 }
 
@@ -544,11 +567,7 @@ Eigen::Vector4d SvgDrawing::content_box() const {
   for (const auto& it : items_)
     for (const auto& p : it.points) extend(p, it.kind == Kind::Circle ? it.radius : 0.0);
   if (!(b[0] <= b[2])) return Eigen::Vector4d(-1, -1, 1, 1);
-  // Degenerate extents (a single point, a horizontal line): give the box some size.
-  const double span = std::max(b[2] - b[0], b[3] - b[1]);
-  const double pad = span > 0 ? 0.0 : std::max(1.0, std::max(std::abs(b[0]), std::abs(b[1])) * 0.1);
-  if (pad > 0) b += Eigen::Vector4d(-pad, -pad, pad, pad);
-  return b;
+  return drawable_box(b);  // a single point, a line parallel to an axis
 }
 
 SvgDrawing::View SvgDrawing::view() const {

@@ -186,6 +186,16 @@ run solve "$EX/paper_fourbar.json" --from -70 --to 120
 check "the wide sweep without output files (its summary alone, no values kept): the same summary, limit lines, exit 1" \
   $([ "$rc" -eq 1 ] && cmp -s out.txt wide.out && cmp -s err.txt wide.err; echo $?)
 check "--plot and --draw write SVG" $(grep -q "<svg" wide.svg && grep -q "<svg" pose.svg; echo $?)
+# The only contour drawn is a straight line parallel to the x axis: the drawing's box has zero height
+# (was exit 2, "SvgDrawing::set_world_box: need finite xmin < xmax").
+cat > flat.json <<'JSON'
+{"links": [{"name": "ground", "ground": true, "contours": [{"name": "c", "type": "line", "from": 0, "to": 10}]},
+           {"name": "slider"}],
+ "pairs": [{"name": "S", "type": "prismatic", "links": ["ground", "slider"], "variable": "s", "value": 0}],
+ "inputs": ["S.s"], "sweep": {"from": 0, "to": 1, "step": 1}}
+JSON
+run solve flat.json --draw flat.svg
+check "--draw of a single line parallel to an axis: exit 0, drawn" $([ "$rc" -eq 0 ] && grep -q "<polyline" flat.svg; echo $?)
 
 # ---- other examples -----------------------------------------------------------------------------------
 for ex in hypocycloid elliptical_gears elliptical_gears_cam cycloid; do

@@ -71,8 +71,8 @@ class SvgChart {
   SvgChart& set_x_label(std::string label);
   SvgChart& set_y_label(std::string label);
   /// Fixed axis ranges (default: automatic, widened to nice ticks). lo < hi required.
-  SvgChart& set_x_range(double lo, double hi);
-  SvgChart& set_y_range(double lo, double hi);
+  SvgChart& set_x_range(double lo, double hi);  // finite lo <= hi; lo == hi is widened around the value
+  SvgChart& set_y_range(double lo, double hi);  // likewise
   /// Preferred number of tick intervals per axis (default 6 for x, 5 for y).
   SvgChart& set_tick_target(int x_intervals, int y_intervals);
   /// Fixed tick steps (e.g. 45 or 90 for angles in degrees); 0 restores the automatic nice step.
@@ -131,7 +131,9 @@ class SvgDrawing {
 
   SvgDrawing& set_title(std::string title);        // drawn at the top, also the document <title>
   SvgDrawing& set_background(std::string color);   // empty: transparent (default "#ffffff")
-  /// Fixed world box instead of fitting the content (xmin < xmax, ymin < ymax).
+  /// Fixed world box instead of fitting the content (finite, xmin <= xmax, ymin <= ymax). A zero extent (a
+  /// straight line parallel to an axis) is widened by 5% of the other extent on each side, a point by 10% of
+  /// its largest coordinate (at least 1); the fitted box follows the same rule.
   SvgDrawing& set_world_box(double xmin, double ymin, double xmax, double ymax);
 
   /// Polyline through world points. A non-finite point breaks it into separate pieces; a closed polyline

@@ -21,6 +21,13 @@ everything else (transforms, viewBox, preserveAspectRatio, shapes, arcs) is svge
     Z                             the subpath is closed
 Moves and zero-length closes are left out; a second Move is printed as "M" (more than one subpath).
 With several ids (comma-separated), each element's lines follow a line "P ID".
+With ID "*", every shape the document draws (svgelements expands <use> clones, the referenced content drawn
+as children of the <use>), in document order, each after a line "P ID" (its own id, repeated for clones).
+There svgelements deviates from SVG (svgelements 1.7.2; these cases are checked by hand in
+test_io_svg_reader.cpp, "use_symbol_viewbox_and_transform_origin_by_hand" and the <switch> tests): the second
+and later <use> of the same group are offset by the earlier clones' x/y; a clone of a clone is misplaced; a
+<use> of an element defined later in the file draws nothing; a <symbol>'s viewBox is not applied; every child
+of a <switch> is drawn; transform-origin is ignored.
 With "map", svgelements reads the path data (arc centres and sweeps by its own F.6.5) and composes the
 element's transforms, and the script maps the untransformed segments by that matrix: control points, and an
 arc's centre and semi-axis end points (an affine map keeps the eccentric parameterisation, so the sweep is
@@ -33,7 +40,7 @@ import math
 import re
 import sys
 
-from svgelements import SVG, Arc, Close, CubicBezier, Line, Move, Path, QuadraticBezier
+from svgelements import SVG, Arc, Close, CubicBezier, Line, Move, Path, QuadraticBezier, Shape
 
 
 def pts(*points):
@@ -65,6 +72,12 @@ def main(file, element_id, ppi, mapped=False):
     with open(file, encoding="utf-8") as f:
         text = exact_root_size(f.read())
     svg = SVG.parse(io.StringIO(text), reify=not mapped, ppi=ppi)
+    if element_id == "*":
+        for element in svg.elements():
+            if isinstance(element, Shape):
+                print("P", element.id)
+                print_segments(element, mapped)
+        return
     ids = element_id.split(",")
     for one in ids:
         element = svg.get_element_by_id(one)

@@ -1,0 +1,115 @@
+// `rollkin contours FILE.dxf|FILE.svg [--draw OUT.svg] [--json]`: what a drawing offers as contours
+// (io/contour_listing.hpp): per chain its group (DXF layer, SVG element), entities, closed or open, length,
+// bounding box, corners and the contour object that selects it in a scene (docs/cli.md, "rollkin contours").
+#include "commands.hpp"
+
+#include "rollkin/io/contour_listing.hpp"
+#include "rollkin/io/svg.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace rollkin::cli {
+namespace {
+
+struct ContoursOptions {
+  std::string file, draw;
+  bool json = false;
+};
+
+int run_contours(const ContoursOptions& o);
+
+}  // namespace
+
+Command contours_command(CLI::App& rollkin) {
+  auto o = std::make_shared<ContoursOptions>();
+  CLI::App* app = rollkin.add_subcommand("contours", "list the contours a DXF or SVG drawing offers, with the scene "
+                                                     "snippet that selects each");
+  app->add_option("FILE", o->file, "the drawing: a .dxf or .svg file")->required()->type_name("");
+  add_output(*app, "--draw", o->draw, "write an SVG picture of the drawing with every chain numbered as listed");
+  app->add_flag("--json", o->json, "print the list as a JSON array instead of text");
+  app->footer(
+      "Lists every chain of the drawing: DXF, per layer, the chains the entities form end to end; SVG, every\n"
+      "subpath of every drawn element (<use> clones, <symbol>, <switch> expanded). Per chain: its group (layer or\n"
+      "element), entities, closed or open, length, bounding box and corners in drawing units (SVG: viewport units,\n"
+      "y up, as a scene without units.length reads them), and the contour object that selects exactly it: paste\n"
+      "it into a scene's \"contours\" with a \"name\" (its \"file\" is the path given here: make it relative to\n"
+      "the scene's directory). docs/cli.md, \"rollkin contours\".\n"
+      "Exit status: 0 listed; 2 bad input (a drawing that cannot be read: the message names the file, the\n"
+      "element or entity and what to change) or command line, nothing written; 3 out of memory.");
+  return {app, [o] { return run_contours(*o); }};
+}
+
+namespace {
+
+std::string box_text(const io::ListedChain& c) {
+  return "(" + fmt(c.min.x(), 10) + ", " + fmt(c.min.y(), 10) + ") to (" + fmt(c.max.x(), 10) + ", " +
+         fmt(c.max.y(), 10) + ")";
+}
+
+nlohmann::ordered_json chain_json(const io::ListedChain& c) {
+  nlohmann::ordered_json j;
+  j["group"] = c.group;
+  j["entities"] = c.entities;
+  j["closed"] = c.closed;
+  j["length"] = c.length;
+  j["min"] = {c.min.x(), c.min.y()};
+  j["max"] = {c.max.x(), c.max.y()};
+  j["corners"] = c.corners;
+  j["selector"] = nlohmann::ordered_json::parse(c.selector);
+  return j;
+}
+
+/// The drawing with every chain in its own colour and numbered at its start, as listed.
+std::string picture(const std::string& file, const std::vector<io::ListedChain>& chains) {
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  io::SvgDrawing d(900, 700, 30);
+  d.set_title(fs::path(file).filename().string() + ": " + std::to_string(chains.size()) + " chain(s)");
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    const io::ListedChain& c = chains[k];
+    std::vector<Eigen::Vector2d> points;
+    for (const auto& s : c.segments) {
+      BezierPath<double> piece({s}, false);
+      for (int i = (points.empty() ? 0 : 1); i <= 24; ++i) points.push_back(piece.jet(i / 24.0, 0).p);
+    }
+    io::Stroke st;
+    st.color = colours[k % (sizeof colours / sizeof *colours)];
+    st.width = 1.4;
+    d.add_polyline(points, st, c.closed);
+    d.add_point(points.front(), st.color, 3.0);
+    d.add_text(points.front(), std::to_string(k + 1), 11.0, st.color);
+  }
+  return d.to_svg();
+}
+
+int run_contours(const ContoursOptions& o) {
+  io::OutputSet outputs({o.file});
+  const std::size_t draw = o.draw.empty() ? 0 : outputs.add("--draw", o.draw);  // checked before reading
+  g_doing = "reading the drawing";
+  const std::vector<io::ListedChain> chains = io::list_contours(o.file);
+  if (o.json) {
+    nlohmann::ordered_json all = nlohmann::ordered_json::array();
+    for (const auto& c : chains) all.push_back(chain_json(c));
+    std::cout << all.dump(2) << "\n";
+  } else {
+    std::cout << o.file << ": " << chains.size() << " chain(s)\n";
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+      const io::ListedChain& c = chains[k];
+      std::string entities;
+      for (const auto& e : c.entities) entities += (entities.empty() ? "" : ", ") + e;
+      std::cout << k + 1 << ". " << c.group << ": " << entities << "; " << (c.closed ? "closed" : "open") << ", length "
+                << fmt(c.length, 10) << ", box " << box_text(c) << ", " << c.corners << " corner(s)\n   "
+                << c.selector << "\n";
+    }
+  }
+  if (!o.draw.empty()) {
+    outputs.set(draw, picture(o.file, chains));
+    outputs.commit();
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace rollkin::cli
