@@ -3,9 +3,9 @@
 // messages of a sweep's problems and the exit status of an error.
 #include "commands.hpp"
 
-#include <Eigen/QR>
-
 #include "rollkin/io/work_bound.hpp"
+
+#include <Eigen/QR>
 
 #include <cmath>
 #include <cstdio>
