@@ -10,14 +10,13 @@
 // before solving, an output that is one of the scene's input files is refused, and all are written or none.
 #include "bindings.hpp"
 
-#include "animation.hpp"     // the CLI's writers (src/cli, library rollkin_outputs): plots, drawing, animation
-#include "output.hpp"
-
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/sweep_table.hpp"
 #include "rollkin/io/work_bound.hpp"
+#include "rollkin/output/centrode_files.hpp"
+#include "rollkin/output/sweep_files.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -159,22 +158,16 @@ rollkin::io::OutputSet output_set(const PyScene& s) {
   return rollkin::io::OutputSet(std::move(inputs));
 }
 
-/// An output file requested by keyword: its label in messages, its path (None: not written) and its text.
-struct FileRequest {
-  const char* label;
-  py::object path;
-  std::function<std::string(const rollkin::io::SweepOutput&)> text;
-};
-
-/// Checks every requested path (before solving), solves, and writes every file or none.
-py::dict write(const PyScene& s, const Request& r, const std::vector<FileRequest>& files) {
+/// Checks every requested path (format keyword, path or None: output::sweep_formats()) before solving,
+/// solves, and writes every file or none, as `rollkin solve` does.
+py::dict write(const PyScene& s, const Request& r, const std::vector<std::pair<std::string, py::object>>& files) {
   rollkin::io::OutputSet outputs = output_set(s);
-  std::vector<std::pair<std::size_t, const FileRequest*>> given;
-  for (const FileRequest& f : files)
-    if (!f.path.is_none()) given.emplace_back(outputs.add(f.label, path_argument(f.path, f.label)), &f);
+  rollkin::output::SweepFiles requested(outputs);
+  for (const auto& [format, path] : files)
+    if (!path.is_none()) requested.request(format, path_argument(path, format.c_str()), format);
   const Job job = solved(s, r, true);
   const rollkin::io::SweepOutput out = output_of(job, r);
-  for (const auto& [index, f] : given) outputs.set(index, f->text(out));
+  requested.write(out, rollkin::output::WriteOptions{r.rates, 1});
   outputs.commit();
   return to_dict(job);
 }
@@ -203,8 +196,8 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
   rollkin::KinematicsData<double> kin(m);
   const auto centres = rollkin::centrodes(m, kin, *job.result, a, b);
   if (dxf_index) {  // a centrode that is one point (a revolute joins the links) has no curve: no DXF, a warning
-    const std::string single_point = rollkin::cli::centrode_single_point(output_of(job, r), centres, a, b);
-    if (single_point.empty()) outputs.set(*dxf_index, rollkin::cli::centrode_dxf(output_of(job, r), centres, a, b));
+    const std::string single_point = rollkin::output::centrode_single_point(output_of(job, r), centres, a, b);
+    if (single_point.empty()) outputs.set(*dxf_index, rollkin::output::centrode_dxf(output_of(job, r), centres, a, b));
     else outputs.omit(*dxf_index);
     outputs.commit();
     const std::string why = single_point + "; dxf not written: a point has no curve to draw as a spline";
@@ -356,12 +349,8 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
               const py::object& csv, const py::object& plot, const py::object& draw, const py::object& animate,
               bool analysis, bool rates, double max_steps) {
-             namespace cli = rollkin::cli;
              return write(s, request(start, stop, step, analysis, rates, max_steps),
-                          {{"csv", csv, [rates](const rollkin::io::SweepOutput& o) { return cli::csv_text(o, rates); }},
-                           {"plot", plot, &cli::plot_svg},
-                           {"draw", draw, &cli::draw_svg},
-                           {"animate", animate, &cli::animation_html}});
+                          {{"csv", csv}, {"plot", plot}, {"draw", draw}, {"animate", animate}});
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("draw") = py::none(),

@@ -76,13 +76,13 @@ int run_centrodes(const CentrodesOptions& o) {
 
   g_doing = "building the output files";
   const std::vector<double> file_values = io::sweep_values(run.sweep);
-  const cli::OutputContext ctx{scene, run.sweep, result, file_values};
-  run.set_output("--out (link A)", [&] { return cli::centrode_text(ctx, centres, a, b, true); });
-  run.set_output("--out (link B)", [&] { return cli::centrode_text(ctx, centres, a, b, false); });
+  const io::SweepOutput ctx{scene, run.sweep, result, file_values};
+  run.set_output("--out (link A)", [&] { return output::centrode_text(ctx, centres, a, b, true); });
+  run.set_output("--out (link B)", [&] { return output::centrode_text(ctx, centres, a, b, false); });
   // A centrode that is one point (two links joined by a revolute) has no curve to draw: its point files are
   // written, the DXF is not (docs/reliability.md, "Outputs").
-  const std::string single_point = cli::centrode_single_point(ctx, centres, a, b);
-  if (single_point.empty()) run.set_output("--dxf", [&] { return cli::centrode_dxf(ctx, centres, a, b); });
+  const std::string single_point = output::centrode_single_point(ctx, centres, a, b);
+  if (single_point.empty()) run.set_output("--dxf", [&] { return output::centrode_dxf(ctx, centres, a, b); });
   else run.omit_output("--dxf");
   g_doing = "writing the output files";
   run.outputs.commit();

@@ -1,7 +1,6 @@
 // `rollkin solve`: one scene or several (--jobs), assembly, sweep, the outputs (CSV, plot, drawing,
 // animation), the summary, the assembly report (--verbose) and the interference check (--interference).
 #include "commands.hpp"
-#include "animation.hpp"
 
 #include "rollkin/io/sweep_file.hpp"
 #include "rollkin/solve/batch.hpp"
@@ -17,7 +16,7 @@
 namespace rollkin::cli {
 namespace {
 
-void print_assembly(std::ostream& out, const io::Scene& scene, const SolveReport<double>& rep, const cli::AssemblyRank& ar) {
+void print_assembly(std::ostream& out, const io::Scene& scene, const SolveReport<double>& rep, const AssemblyRank& ar) {
   const Mechanism<double>& m = scene.mechanism;
   for (const std::string& n : scene.notes) out << "contour " << n << "\n";
   out << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
@@ -93,7 +92,7 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
 struct SolveOptions {
   SweepRequest sweep;
   std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
-  std::string csv, plot, draw, animate;
+  std::vector<std::pair<std::string, std::string>> files;  // (format, path) per output::sweep_formats(), "" not given
   bool rates = false, analysis = false, verbose = false, interference = false;
   int jobs = 0;  // scenes solved at once, or with one scene the threads that format its CSV (0: one per core)
 };
@@ -106,11 +105,8 @@ Command solve_command(CLI::App& rollkin) {
   auto o = std::make_shared<SolveOptions>();
   CLI::App* app = rollkin.add_subcommand("solve", "assemble the mechanism and sweep its input (double precision)");
   add_sweep_options(*app, o->sweep, &o->scenes);
-  add_output(*app, "--csv", o->csv, "one row per input value: input, pair variables, link poses, residual, status");
-  add_output(*app, "--plot", o->plot, "SVG chart of the pair variables against the input");
-  add_output(*app, "--draw", o->draw, "SVG drawing of the mechanism at four poses across the solved range, one panel each");
-  add_output(*app, "--animate", o->animate,
-             "self-contained HTML page animating the mechanism over the solved poses (play/pause, slider)");
+  for (const output::SweepFormat& f : output::sweep_formats()) o->files.emplace_back(f.name, "");
+  for (auto& [format, path] : o->files) add_output(*app, "--" + format, path, output::sweep_format(format).help);
   app->add_flag("--rates", o->rates, "add the rate columns d(var)/d(input) to the CSV");
   app->add_flag("--analysis", o->analysis,
                 "add the contact analysis columns to the CSV and charts to the plot: pressure angle, sliding, "
@@ -149,13 +145,25 @@ namespace {
 
 /// The outputs `rollkin solve` may write: (option, path), path "" for one not given.
 std::vector<std::pair<std::string, std::string>> output_files(const SolveOptions& o) {
-  return {{"--csv", o.csv}, {"--plot", o.plot}, {"--draw", o.draw}, {"--animate", o.animate}};
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& [format, path] : o.files) files.emplace_back("--" + format, path);
+  return files;
+}
+
+bool any_file(const SolveOptions& o) {
+  for (const auto& file : o.files)
+    if (!file.second.empty()) return true;
+  return false;
 }
 
 /// `rollkin solve` on one scene (o.sweep.scene, or `loaded` when already read): assembly, sweep, outputs,
 /// summary on `out`, one line per problem on `err`.
 int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ostream& out, std::ostream& err) {
-  SweepRun run = loaded ? SweepRun(std::move(*loaded), o.sweep, output_files(o)) : SweepRun(o.sweep, output_files(o));
+  SweepRun run = loaded ? SweepRun(std::move(*loaded), o.sweep, {}) : SweepRun(o.sweep, {});
+  g_doing = "checking the output files";
+  output::SweepFiles files(run.outputs);
+  for (const auto& [format, path] : o.files)
+    if (!path.empty()) files.request(format, path, "--" + format);
   const io::Scene& scene = run.scene;
   const io::Sweep& sw = run.sweep;
   const std::vector<double>& inputs = run.inputs;
@@ -164,13 +172,13 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   SolveData<double> sd(m);
   VectorX<double> q;
   const SolveReport<double> assembly = assemble_scene(scene, sd, q);
-  if (o.verbose) print_assembly(out, scene, assembly, cli::full_rank(m, sd));
+  if (o.verbose) print_assembly(out, scene, assembly, full_rank(m, sd));
   g_doing = "solving the sweep";
   // Only the poses' values feed the outputs, the interference check and the design check: without them the
   // sweep keeps its summary alone (sweep_summary.hpp), no values, and on a fine grid interpolates the poses
   // between its sub-steps, each checked by its residual (dense output, solve/continuation.hpp).
   const bool values_needed =
-      !(o.csv.empty() && o.plot.empty() && o.draw.empty() && o.animate.empty()) || o.interference || o.verbose;
+      any_file(o) || o.interference || o.verbose;
   std::optional<SweepResult<double>> result;
   std::optional<io::SweepFile> file;
   SweepSummary<double> found;
@@ -191,11 +199,8 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
     // Everything is computed before anything is written, and then written all or nothing.
     g_doing = "building the output files";
     const std::vector<double> file_values = io::sweep_values(sw);
-    const cli::OutputContext ctx{scene, sw, *rows, file_values, o.analysis};
-    run.stream_output("--csv", [&](io::OutputSink& sink) { io::write_sweep_csv(ctx, o.rates, sink, o.jobs); });
-    run.set_output("--plot", [&] { return cli::plot_svg(ctx); });
-    run.set_output("--draw", [&] { return cli::draw_svg(ctx); });
-    run.set_output("--animate", [&] { return cli::animation_html(ctx); });
+    const io::SweepOutput ctx{scene, sw, *rows, file_values, o.analysis};
+    files.write(ctx, output::WriteOptions{o.rates, o.jobs});
     g_doing = "writing the output files";
     run.outputs.commit();
   } else {
@@ -246,13 +251,12 @@ std::vector<SolveOptions> per_scene_options(const SolveOptions& o) {
     one.jobs = 1;  // the scenes share the threads: each formats its own CSV on the thread that solved it
     one.scenes = {file};
     one.sweep.scene = file;
-    for (auto [option, path] : {std::pair{"--csv", &one.csv}, {"--plot", &one.plot}, {"--draw", &one.draw},
-                                {"--animate", &one.animate}}) {
-      if (path->empty()) continue;
-      if (path->find("{scene}") == std::string::npos)
-        throw UsageError(std::string(option) + " '" + *path + "': with several scenes each needs its own file; put " +
+    for (auto& [format, path] : one.files) {
+      if (path.empty()) continue;
+      if (path.find("{scene}") == std::string::npos)
+        throw UsageError("--" + format + " '" + path + "': with several scenes each needs its own file; put " +
                          "{scene} in the name, e.g. 'out/{scene}.csv'");
-      *path = with_scene_name(*path, fs::path(file).stem().string());
+      path = with_scene_name(path, fs::path(file).stem().string());
     }
     each.push_back(std::move(one));
   }

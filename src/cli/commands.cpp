@@ -5,6 +5,8 @@
 
 #include "rollkin/io/work_bound.hpp"
 
+#include <Eigen/QR>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -138,10 +140,6 @@ void SweepRun::omit_output(const std::string& option) {
   if (it != given_.end()) outputs.omit(it->second);
 }
 
-void SweepRun::stream_output(const std::string& option, std::function<void(io::OutputSink&)> write) {
-  const auto it = given_.find(option);
-  if (it != given_.end()) outputs.set_writer(it->second, std::move(write));
-}
 
 io::Scene read_scene(const std::string& file) {
   g_doing = "reading the scene";
@@ -256,6 +254,17 @@ int error_status(std::ostream& err) {
     err << "rollkin: unexpected error\n";
     return 2;
   }
+}
+
+AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd) {
+  MatrixX<double> j = sd.kin.dense_jacobian();  // either store (the sparse path keeps only the nonzeros)
+  for (int c = 0; c < m.variable_count(); ++c) j.col(c) = j.col(c).cwiseQuotient(sd.row_scale) * m.variable_scale(c);
+  Eigen::CompleteOrthogonalDecomposition<MatrixX<double>> cod(j);
+  AssemblyRank r;
+  r.rank = static_cast<int>(cod.rank());
+  r.redundant = m.equation_count() - r.rank;
+  r.mobility = m.variable_count() - r.rank;
+  return r;
 }
 
 }  // namespace rollkin::cli

@@ -3,7 +3,9 @@
 // design check's text (src/cli/command_check.cpp) and the exit status of an error. Each command is one file
 // src/cli/command_<name>.cpp declaring its options and running it; main.cpp lists the commands.
 #pragma once
-#include "output.hpp"
+#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/centrode_files.hpp"
+#include "rollkin/output/sweep_files.hpp"
 
 #include "rollkin/design_check.hpp"
 #include "rollkin/io/output_set.hpp"
@@ -108,8 +110,6 @@ struct SweepRun {
   /// The output file named by `option`, if given, is not written after all (io::OutputSet::omit).
   void omit_output(const std::string& option);
 
-  /// The same for an output streamed into its file at commit (io::OutputSet::set_writer).
-  void stream_output(const std::string& option, std::function<void(io::OutputSink&)> write);
 
  private:
   std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
@@ -166,5 +166,14 @@ struct DesignReport {
 
 /// The design check of a solved sweep (rollkin/design_check.hpp) as text.
 DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result);
+
+
+/// Rank of the full (scaled) constraint Jacobian at the pose sd was last evaluated at (solve --verbose).
+struct AssemblyRank {
+  int rank = 0;
+  int redundant = 0;  // equations - rank
+  int mobility = 0;   // variables - rank
+};
+AssemblyRank full_rank(const Mechanism<double>& m, const SolveData<double>& sd);
 
 }  // namespace rollkin::cli

@@ -16,7 +16,7 @@
 //
 // --animate writes one self-contained HTML page (inline SVG and script, no external file) that plays the
 // solved poses: a play/pause button, a slider over the poses, the input value and each pose's status
-// (src/cli/animation.hpp).
+// (include/rollkin/output/animation.hpp).
 //
 // The command line is parsed by CLI11. Each command is one file src/cli/command_<name>.cpp: its options struct,
 // the function that declares its options (descriptions are the --help text) and the function that runs it;

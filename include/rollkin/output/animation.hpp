@@ -1,4 +1,4 @@
-// `rollkin solve --animate FILE.html`: the solved sweep as one self-contained HTML page (no external file,
+// `rollkin solve --animate FILE.html` (Python Scene.write(animate=)): the solved sweep as one self-contained HTML page (no external file,
 // script or style) that animates the mechanism in an inline SVG.
 //
 // Each link is drawn once in its own frame (its contours as SVG paths, its body and joints: link_sketches(),
@@ -19,13 +19,13 @@
 // its data holds only numbers and fixed status texts.
 #pragma once
 
-#include "output.hpp"
+#include "rollkin/output/drawing.hpp"
 
 #include <string>
 
-namespace rollkin::cli {
+namespace rollkin::output {
 
 /// The animation page of the solved sweep in ctx.
-std::string animation_html(const OutputContext& ctx);
+std::string animation_html(const SweepOutput& ctx);
 
-}  // namespace rollkin::cli
+}  // namespace rollkin::output

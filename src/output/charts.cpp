@@ -1,6 +1,6 @@
-// The --plot chart (plot_svg, output.hpp): the pair variables against the input and, with --analysis, the
+// The --plot chart (plot_svg, rollkin/output/charts.hpp): the pair variables against the input and, with --analysis, the
 // contact analysis charts, stacked in one SVG document.
-#include "output.hpp"
+#include "rollkin/output/charts.hpp"
 
 #include "rollkin/analysis.hpp"
 #include "rollkin/io/decimate.hpp"
@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::cli {
+namespace rollkin::output {
 namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 using io::kOutputAngle;
 double out_scale(const Mechanism<double>& m, int var) { return io::output_scale(m, var); }
 
-std::string axis_label(const OutputContext& ctx, int var) {
+std::string axis_label(const SweepOutput& ctx, int var) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   switch (m.variables[var].kind) {
     case ParamKind::Angle: return m.variables[var].name + " [" + io::unit_label(kOutputAngle) + "]";
@@ -62,7 +62,7 @@ struct ChartSpec {
 struct InputAxis {
   io::SweepRows result;
   double scale, lo, hi;
-  InputAxis(const OutputContext& ctx)
+  InputAxis(const SweepOutput& ctx)
       : result(ctx.result), scale(out_scale(ctx.scene.mechanism, ctx.sweep.variable)),
         lo(std::numeric_limits<double>::infinity()), hi(-lo) {
     for (std::size_t r = 0; r < result.size(); ++r) {
@@ -89,7 +89,7 @@ io::ChartSeries chart_series(io::SeriesReducer& reduced) {
 /// series[c][k]: series k of chart c, one point per pose (NaN where not solved) reduced to the chart's
 /// columns, in one pass over the poses: each is analysed once and not kept. turns[l]: link l's angular
 /// acceleration is not zero at some pose.
-void chart_values(const OutputContext& ctx, const InputAxis& axis, const std::vector<ChartSpec>& specs, int width,
+void chart_values(const SweepOutput& ctx, const InputAxis& axis, const std::vector<ChartSpec>& specs, int width,
                   std::vector<std::vector<io::SeriesReducer>>& series, std::vector<bool>& turns) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   series.assign(specs.size(), {});
@@ -113,7 +113,7 @@ void chart_values(const OutputContext& ctx, const InputAxis& axis, const std::ve
 
 /// The charts of specs with their values; a link's series only where the link turns (chart_values), a chart
 /// with no series left out.
-std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const InputAxis& axis,
+std::vector<io::SvgChart> charts_from_specs(const SweepOutput& ctx, const InputAxis& axis,
                                             const std::vector<ChartSpec>& specs) {
   const int width = 760, height = 360;
   std::vector<std::vector<io::SeriesReducer>> series;
@@ -139,7 +139,7 @@ std::vector<io::SvgChart> charts_from_specs(const OutputContext& ctx, const Inpu
 }
 
 /// The --analysis charts (docs/analysis.md), in the CSV's output units.
-std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const InputAxis& axis) {
+std::vector<io::SvgChart> analysis_charts(const SweepOutput& ctx, const InputAxis& axis) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const double degrees = io::from_radians(1.0, kOutputAngle);
   const double in_scale = out_scale(m, ctx.sweep.variable);
@@ -217,7 +217,7 @@ std::vector<io::SvgChart> analysis_charts(const OutputContext& ctx, const InputA
 
 }  // namespace
 
-std::string plot_svg(const OutputContext& ctx) {
+std::string plot_svg(const SweepOutput& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const int input = ctx.sweep.variable;
   const InputAxis axis(ctx);
@@ -264,4 +264,4 @@ std::string plot_svg(const OutputContext& ctx) {
   return stack_charts(charts);
 }
 
-}  // namespace rollkin::cli
+}  // namespace rollkin::output

@@ -1,4 +1,6 @@
-#include "animation.hpp"
+#include "rollkin/output/animation.hpp"
+
+#include "animation_assets.hpp"  // generated: animation.css and animation.js as string literals
 
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/csv.hpp"
@@ -7,13 +9,15 @@
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>
-#include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
 
-namespace rollkin::cli {
+#include <nlohmann/json.hpp>
+
+namespace rollkin::output {
 namespace {
 
 const int kWidth = 900, kHeight = 640;  // px of the drawing
@@ -25,23 +29,6 @@ std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.7g", v);
   return buf;
-}
-
-/// A JavaScript string literal of text with every character but letters, digits and " _.,:;()-" written as
-/// \u00XX: nothing in it can end the string, the script or the CDATA section.
-std::string js_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const unsigned char u = static_cast<unsigned char>(c);
-    if (std::isalnum(u) || std::string(" _.,:;()-").find(c) != std::string::npos) {
-      out += c;
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(u));
-      out += buf;
-    }
-  }
-  return out + "\"";
 }
 
 /// SVG path data through the points ("M x y x y ...": coordinates after a moveto are linetos; "Z" when
@@ -95,7 +82,7 @@ struct Frames {
   std::vector<std::vector<Eigen::Vector2d>> contacts;  // per frame, per contact pair: world point
 };
 
-Frames frames_of(const OutputContext& ctx) {
+Frames frames_of(const SweepOutput& ctx) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   const io::SweepRows& result = ctx.result;
   io::RowReader rows(result);
@@ -147,7 +134,7 @@ struct LinkCentrodes {
   std::vector<std::vector<Eigen::Vector2d>> fixed, moving;  // per link (empty for the ground)
 };
 
-LinkCentrodes centrodes_of(const OutputContext& ctx, const Frames& f, const Eigen::Vector4d& view) {
+LinkCentrodes centrodes_of(const SweepOutput& ctx, const Frames& f, const Eigen::Vector4d& view) {
   const Mechanism<double>& m = ctx.scene.mechanism;
   KinematicsData<double> kin(m);
   LinkCentrodes out;
@@ -176,152 +163,63 @@ LinkCentrodes centrodes_of(const OutputContext& ctx, const Frames& f, const Eige
   return out;
 }
 
-/// A JSON array of the numbers, 7 significant digits.
-std::string json_numbers(const std::vector<double>& v) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + num(v[i]);
-  return out + "]";
+/// v rounded to 7 significant digits (the page's compact tables), NaN (JSON null) when not finite.
+double seven_digits(double v) {
+  if (!std::isfinite(v)) return std::numeric_limits<double>::quiet_NaN();
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.7g", v);
+  return std::strtod(buf, nullptr);
 }
 
-/// The data of the script, per frame: the pose (CSV row, from 0), the input column (full precision, as in
-/// the CSV), a status index and the flat tables of link poses and contact points (null for a pose without
-/// values).
-std::string page_data(const OutputContext& ctx, const Frames& f, std::size_t start) {
+/// Text of the status of one kind on the page, and the class that colours it.
+std::pair<std::string, std::string> status_text(SolveStatus s) {
+  const std::string name = to_string(s);
+  if (s == SolveStatus::Converged) return {name, "ok"};
+  if (s == SolveStatus::Singular)
+    return {name + ": the values follow the branch (interpolated between the regular poses on both sides)", "warn"};
+  return {name + ": not solved, the moving links are hidden", "bad"};
+}
+
+/// The data of the script (nlohmann-json), per frame: the pose (CSV row, from 0), the input column (full
+/// precision, as in the CSV), a status index and the flat tables of link poses and contact points (7
+/// significant digits; null for a pose without values). Only numbers and the fixed status texts: nothing in
+/// it can end the script or its CDATA section.
+std::string page_data(const SweepOutput& ctx, const Frames& f, std::size_t start) {
+  using nlohmann::json;
   const Mechanism<double>& m = ctx.scene.mechanism;
-  std::vector<std::string> texts, kinds;
+  json texts = json::array(), kinds = json::array(), rows = json::array(), inputs = json::array(),
+       status = json::array(), poses = json::array(), contacts = json::array();
   std::map<SolveStatus, std::size_t> index;
-  std::string rows, inputs, status, poses, contacts;
   for (std::size_t k = 0; k < f.has.size(); ++k) {
     const SolveStatus s = ctx.result.status(f.pose[k]);
     if (!index.count(s)) {
       index[s] = texts.size();
-      const std::string name = to_string(s);
-      if (s == SolveStatus::Converged) {
-        texts.push_back(name);
-        kinds.push_back("ok");
-      } else if (s == SolveStatus::Singular) {
-        texts.push_back(name + ": the values follow the branch (interpolated between the regular poses on both sides)");
-        kinds.push_back("warn");
-      } else {
-        texts.push_back(name + ": not solved, the moving links are hidden");
-        kinds.push_back("bad");
-      }
+      const auto [text, kind] = status_text(s);
+      texts.push_back(text);
+      kinds.push_back(kind);
     }
-    const std::string sep = k ? "," : "";
-    rows += sep + std::to_string(f.pose[k]);
-    inputs += sep + io::format_double(input_column(ctx, f.pose[k]));
-    status += sep + std::to_string(index[s]);
-    std::vector<double> row, points;
+    rows.push_back(f.pose[k]);
+    inputs.push_back(input_column(ctx, f.pose[k]));
+    status.push_back(index[s]);
+    json row = json::array(), points = json::array();
     for (const auto& p : f.links[k]) {
       const Eigen::Vector3d c = pose_columns(p);
-      row.insert(row.end(), {c.x(), c.y(), c.z()});
+      for (double v : {c.x(), c.y(), c.z()}) row.push_back(seven_digits(v));
     }
-    for (const auto& p : f.contacts[k]) points.insert(points.end(), {p.x(), p.y()});
-    poses += sep + (f.has[k] ? json_numbers(row) : "null");
-    contacts += sep + (f.has[k] ? json_numbers(points) : "null");
+    for (const auto& p : f.contacts[k]) {
+      points.push_back(seven_digits(p.x()));
+      points.push_back(seven_digits(p.y()));
+    }
+    poses.push_back(f.has[k] ? row : json(nullptr));
+    contacts.push_back(f.has[k] ? points : json(nullptr));
   }
-  auto strings = [](const std::vector<std::string>& v) {
-    std::string out = "[";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + js_string(v[i]);
-    return out + "]";
-  };
-  return "{\"links\":" + std::to_string(m.links.size()) + ",\"contacts\":" + std::to_string(contact_pairs(m).size()) +
-         ",\"ground\":" + std::to_string(m.ground) + ",\"start\":" + std::to_string(start) + ",\n\"status_texts\":" +
-         strings(texts) + ",\"status_kinds\":" + strings(kinds) + ",\n\"rows\":[" + rows + "],\n\"inputs\":[" + inputs +
-         "],\n\"status\":[" +
-         status + "],\n\"poses\":[" + poses + "],\n\"contact_points\":[" + contacts + "]}";
+  const json data{{"links", m.links.size()},    {"contacts", contact_pairs(m).size()}, {"ground", m.ground},
+                  {"start", start},             {"status_texts", texts},               {"status_kinds", kinds},
+                  {"rows", rows},               {"inputs", inputs},                    {"status", status},
+                  {"poses", poses},             {"contact_points", contacts}};
+  return data.dump(-1, ' ', /*ensure_ascii=*/true);
 }
 
-// The page's style and script (fixed text). A frame sets one `transform` per link and per contact point from
-// tables of strings built once from the data; nothing else of the document changes.
-const char* const kStyle = R"CSS(
-body { font: 14px sans-serif; margin: 12px; color: #222; }
-h1 { font-size: 16px; margin: 0 0 8px 0; }
-#controls { display: flex; flex-wrap: wrap; gap: 14px; align-items: center; margin-bottom: 6px; }
-#pose { width: 280px; }
-#play { width: 64px; }
-#status.ok { color: #2a7d2a; }
-#status.warn { color: #b8860b; font-weight: bold; }
-#status.bad { color: #d62728; font-weight: bold; }
-svg path { fill: none; vector-effect: non-scaling-stroke; stroke-linejoin: round; }
-svg .joint { vector-effect: non-scaling-stroke; }
-svg.no-traces .trace, svg.no-centrodes .centrode { display: none; }
-)CSS";
-
-const char* const kScript = R"JS(
-(function () {
-  "use strict";
-  var d = rollkinData, n = d.inputs.length;
-  var svg = document.getElementById("mechanism");
-  var slider = document.getElementById("pose"), button = document.getElementById("play");
-  var valueOut = document.getElementById("input-value"), indexOut = document.getElementById("pose-index");
-  var statusOut = document.getElementById("status");
-  var links = [], contacts = [], l, c, k;
-  for (l = 0; l < d.links; ++l) links.push(document.getElementById("link-" + l));
-  for (c = 0; c < d.contacts; ++c) contacts.push(document.getElementById("contact-" + c));
-  // Per pose, the transform of every link and contact point (null: the pose has no values).
-  var linkT = [], contactT = [];
-  for (k = 0; k < n; ++k) {
-    var p = d.poses[k], q = d.contact_points[k], t = null, u = null;
-    if (p !== null) {
-      t = [];
-      for (l = 0; l < d.links; ++l) t.push("translate(" + p[3 * l] + " " + p[3 * l + 1] + ") rotate(" + p[3 * l + 2] + ")");
-      u = [];
-      for (c = 0; c < d.contacts; ++c) u.push("translate(" + q[2 * c] + " " + q[2 * c + 1] + ")");
-    }
-    linkT.push(t);
-    contactT.push(u);
-  }
-  var shown = -1, hidden = false;
-  function setHidden(h) {
-    if (h === hidden) return;
-    hidden = h;
-    for (l = 0; l < links.length; ++l) if (l !== d.ground) links[l].setAttribute("visibility", h ? "hidden" : "visible");
-    for (c = 0; c < contacts.length; ++c) contacts[c].setAttribute("visibility", h ? "hidden" : "visible");
-  }
-  function show(i) {
-    if (i === shown) return;
-    shown = i;
-    var t = linkT[i], u = contactT[i];
-    if (t !== null) {
-      for (l = 0; l < links.length; ++l) links[l].setAttribute("transform", t[l]);
-      for (c = 0; c < contacts.length; ++c) contacts[c].setAttribute("transform", u[c]);
-    }
-    setHidden(t === null);
-    valueOut.textContent = String(d.inputs[i]);
-    indexOut.textContent = String(d.rows[i] + 1);
-    statusOut.textContent = d.status_texts[d.status[i]];
-    statusOut.className = d.status_kinds[d.status[i]];
-    slider.value = String(i);
-  }
-  // Playing: about six seconds per sweep (10 to 60 poses per second), from the pose shown, looping.
-  var rate = Math.min(60, Math.max(10, n / 6)), playing = false, t0 = null, from = 0;
-  function tick(now) {
-    if (!playing) return;
-    if (t0 === null) t0 = now;
-    show((from + Math.floor((now - t0) * rate / 1000)) % n);
-    window.requestAnimationFrame(tick);
-  }
-  function setPlaying(on) {
-    playing = on;
-    button.textContent = on ? "Pause" : "Play";
-    button.setAttribute("aria-pressed", on ? "true" : "false");
-    if (on) {
-      t0 = null;
-      from = shown === n - 1 ? 0 : shown;
-      window.requestAnimationFrame(tick);
-    }
-  }
-  button.addEventListener("click", function () { setPlaying(!playing); });
-  slider.addEventListener("input", function () { show(Number(slider.value)); t0 = null; from = shown; });
-  var traces = document.getElementById("show-traces");  // (none without contact pairs)
-  if (traces !== null) traces.addEventListener("change", function (e) { svg.classList.toggle("no-traces", !e.target.checked); });
-  document.getElementById("show-centrodes").addEventListener("change", function (e) {
-    svg.classList.toggle("no-centrodes", !e.target.checked);
-  });
-  show(d.start);
-})();
-)JS";
 
 std::string fixed2(double v) {
   char buf[40];
@@ -331,7 +229,7 @@ std::string fixed2(double v) {
 
 /// What the page is made of: the links' drawings, the frames, the pose shown first and the view.
 struct Page {
-  const OutputContext& ctx;
+  const SweepOutput& ctx;
   const Mechanism<double>& m;
   std::vector<LinkSketch> sketches;
   Frames f;
@@ -342,7 +240,7 @@ struct Page {
   double px = 1;                     // one pixel in world units (marker sizes)
   Eigen::Vector4d around;            // the picture and as much again around it (world)
 
-  explicit Page(const OutputContext& c)
+  explicit Page(const SweepOutput& c)
       : ctx(c), m(c.scene.mechanism), sketches(link_sketches(m)), f(frames_of(c)), contacts(contact_pairs(m)) {
     const std::size_t n = f.has.size();
     while (start + 1 < n && !f.has[start]) ++start;
@@ -365,7 +263,7 @@ std::string head_and_controls(const Page& p) {
   const std::string name = io::xml_escape(base_name(p.ctx.scene.file));
   const std::string unit = io::xml_escape(input_column_unit(p.ctx));
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>" + name +
-         ": animation (rollkin)</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
+         ": animation (rollkin)</title>\n<style>" + assets::kAnimationStyle + "</style>\n</head>\n<body>\n<h1>" + name + ": " +
          std::to_string(poses) + " poses of the sweep of " + io::xml_escape(p.ctx.sweep.input) +
          (n < poses ? ", " + std::to_string(n) + " of them shown (evenly spaced, and both sides of every status change)" : "") +
          "</h1>\n" +
@@ -462,10 +360,10 @@ std::string drawing(const Page& p) {
 
 }  // namespace
 
-std::string animation_html(const OutputContext& ctx) {
+std::string animation_html(const SweepOutput& ctx) {
   const Page p(ctx);
   return head_and_controls(p) + drawing(p) + "<script>//<![CDATA[\nvar rollkinData = " + page_data(ctx, p.f, p.start) +
-         ";\n" + kScript + "//]]>\n</script>\n</body>\n</html>\n";
+         ";\n" + assets::kAnimationScript + "//]]>\n</script>\n</body>\n</html>\n";
 }
 
-}  // namespace rollkin::cli
+}  // namespace rollkin::output
