@@ -5,6 +5,7 @@
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] [--max-steps N] --csv FILE
 //   rollkin centrodes SCENE --links A B [--from V --to V --step V] [--max-steps N] --out PREFIX
 //   rollkin check SCENE [--from V --to V --step V] [--max-steps N]
+//   rollkin synthesize cam SPEC.json --out PREFIX
 //   rollkin --help | --version;  rollkin COMMAND --help
 //
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
@@ -83,7 +84,7 @@ int main(int argc, char** argv) {
   rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'.\n" +
                  std::string(kExitStatus));
   const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin), centrodes_command(rollkin),
-                                      check_command(rollkin)};
+                                      check_command(rollkin), synthesize_command(rollkin)};
   const CLI::App* chosen = nullptr;
   try {
     try {

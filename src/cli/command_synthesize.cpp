@@ -1,0 +1,168 @@
+// `rollkin synthesize cam SPEC.json --out PREFIX`: the disk cam that gives a follower a motion law, written as
+// a point file, a DXF SPLINE, an SVG drawing and the scene that analyses it, then proved by that analysis
+// (docs/synthesis.md).
+#include "commands.hpp"
+
+#include "rollkin/io/csv.hpp"
+#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/synthesis/cam.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace rollkin::cli {
+namespace {
+
+struct SynthesizeCamOptions {
+  std::string spec;
+  std::string out;  // PREFIX of PREFIX.txt, .dxf, .svg, .json
+};
+
+int run_synthesize_cam(const SynthesizeCamOptions& o);
+
+}  // namespace
+
+Command synthesize_command(CLI::App& rollkin) {
+  auto o = std::make_shared<SynthesizeCamOptions>();
+  CLI::App* app = rollkin.add_subcommand("synthesize", "the contour that gives a prescribed motion (cams), proved by analysing it");
+  app->require_subcommand(1);
+  CLI::App* cam = app->add_subcommand("cam", "a disk cam from a motion law and a follower (docs/synthesis.md)");
+  cam->add_option("SPEC", o->spec, "the cam spec (JSON: base_radius, rotation, follower, contact, law, tolerance)")
+      ->required()
+      ->type_name("SPEC.json");
+  add_output(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
+      ->required()
+      ->type_name("PREFIX");
+  cam->footer(
+      "Computes the cam profile as the envelope of the follower's contour (roller or flat face) under its motion\n"
+      "relative to the turning cam, sampled so that the fitted spline is within a quarter of the tolerance of\n"
+      "the true profile. Writes PREFIX.txt (closed point file, the cam's frame), PREFIX.dxf (one SPLINE),\n"
+      "PREFIX.svg (cam and follower at the law's start) and PREFIX.json (the scene: revolute 'cam' theta,\n"
+      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing. Then it reads PREFIX.json, solves\n"
+      "one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
+      "pressure angle and the smallest radius of curvature of the profile at the contacts.\n"
+      "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
+      "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
+      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory.");
+  return {app, [o] { return run_synthesize_cam(*o); }};
+}
+
+namespace {
+
+std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
+  std::string out = "# cam profile written by rollkin synthesize cam from " + spec.file +
+                    "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
+                    (spec.length_label.empty() ? std::string("as the spec") : spec.length_label) + "\n";
+  for (const auto& p : points) {
+    io::append_double(out, p.x());
+    out += ' ';
+    io::append_double(out, p.y());
+    out += '\n';
+  }
+  return out;
+}
+
+/// The cam (filled profile) and the follower at the law's start, y up, the cam centre marked.
+std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
+  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
+  auto grow = [&](const Vec2<double>& p, double r) {
+    lo_x = std::min(lo_x, p.x() - r);
+    hi_x = std::max(hi_x, p.x() + r);
+    lo_y = std::min(lo_y, p.y() - r);
+    hi_y = std::max(hi_y, p.y() + r);
+  };
+  for (const auto& p : profile.points) grow(p, 0);
+  const Vec2<double> f = profile.follower_origin;
+  if (spec.contact == synthesis::FollowerContact::Roller) grow(f, spec.roller_radius);
+  else grow(f, profile.face_half_length);
+  if (spec.motion == synthesis::FollowerMotion::Oscillating) grow(spec.pivot, 0);
+  const double margin = 0.05 * std::max(hi_x - lo_x, hi_y - lo_y);
+  std::ostringstream s;
+  s.precision(10);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << lo_x - margin << " " << -hi_y - margin << " "
+    << hi_x - lo_x + 2 * margin << " " << hi_y - lo_y + 2 * margin << "\">\n<g transform=\"scale(1,-1)\" fill=\"none\" "
+    << "stroke=\"black\" stroke-width=\"" << margin / 10 << "\">\n<path id=\"cam\" fill=\"#dde\" d=\"M";
+  for (const auto& p : profile.points) s << " " << p.x() << " " << p.y();
+  s << " Z\"/>\n";
+  if (spec.contact == synthesis::FollowerContact::Roller)
+    s << "<circle id=\"roller\" cx=\"" << f.x() << "\" cy=\"" << f.y() << "\" r=\"" << spec.roller_radius << "\"/>\n";
+  else
+    s << "<line id=\"face\" x1=\"" << f.x() - profile.face_half_length << "\" y1=\"" << f.y() << "\" x2=\""
+      << f.x() + profile.face_half_length << "\" y2=\"" << f.y() << "\"/>\n";
+  if (spec.motion == synthesis::FollowerMotion::Oscillating)
+    s << "<line id=\"arm\" x1=\"" << spec.pivot.x() << "\" y1=\"" << spec.pivot.y() << "\" x2=\"" << f.x() << "\" y2=\""
+      << f.y() << "\"/>\n";
+  s << "<circle id=\"cam_centre\" cx=\"0\" cy=\"0\" r=\"" << margin / 5 << "\"/>\n</g>\n</svg>\n";
+  return s.str();
+}
+
+/// The law's unit for messages: the length unit, or the angle unit of an oscillating follower.
+std::string law_value(const synthesis::CamSpec& spec, double v) {
+  if (spec.motion == synthesis::FollowerMotion::Oscillating)
+    return fmt(io::from_radians(v, spec.angle_unit), 6) + " " + io::unit_label(spec.angle_unit);
+  return fmt(v, 6) + (spec.length_label.empty() ? "" : " " + spec.length_label);
+}
+
+std::string angle_value(const synthesis::CamSpec& spec, double rad) {
+  return fmt(io::from_radians(rad, spec.angle_unit), 10) + " " + io::unit_label(spec.angle_unit);
+}
+
+int run_synthesize_cam(const SynthesizeCamOptions& o) {
+  g_doing = "reading the cam spec";
+  const synthesis::CamSpec spec = synthesis::read_cam_spec(o.spec);
+  io::OutputSet outputs(spec.files_read);
+  const std::string txt = o.out + ".txt", dxf = o.out + ".dxf", svg = o.out + ".svg", scene_file = o.out + ".json";
+  const std::size_t i_txt = outputs.add("--out (profile)", txt), i_dxf = outputs.add("--out (DXF)", dxf),
+                    i_svg = outputs.add("--out (SVG)", svg), i_scene = outputs.add("--out (scene)", scene_file);
+
+  for (const auto& j : spec.law->check_continuity()) {
+    const char* what[] = {"the displacement jumps (no motion can follow it)", "the velocity jumps (infinite acceleration)",
+                          "the acceleration jumps (infinite jerk)"};
+    std::cerr << o.spec << ": law: at cam angle " << angle_value(spec, j.theta) << " " << what[j.order] << ": from "
+              << fmt(j.left) << " to " << fmt(j.right) << "\n";
+  }
+
+  g_doing = "computing the cam profile";
+  const synthesis::CamProfile profile = synthesis::synthesise_cam(spec);
+  if (!profile.envelope.defects.empty()) {
+    for (const auto& d : profile.envelope.defects)
+      std::cerr << o.spec << ": undercut: at cam angle " << angle_value(spec, d.t) << " " << d.what
+                << (std::isfinite(d.point.x()) ? " (profile point " + fmt(d.point.x(), 10) + ", " + fmt(d.point.y(), 10) + ")" : "")
+                << "\n";
+    std::cerr << o.spec << ": the profile is undercut (a smaller roller or a larger base circle avoids it); nothing written\n";
+    return 1;
+  }
+
+  g_doing = "building the output files";
+  const std::string profile_name = std::filesystem::path(txt).filename().string();
+  outputs.set(i_txt, profile_text(spec, profile.points));
+  SampledProfile<double> spline(profile.points, SplineOptions<double>{true});
+  outputs.set(i_dxf, io::dxf_text({io::spline_of(spline, "CAM")}, spec.length_label));
+  outputs.set(i_svg, drawing_svg(spec, profile));
+  outputs.set(i_scene, synthesis::cam_scene(spec, profile, profile_name).dump(2) + "\n");
+  g_doing = "writing the output files";
+  outputs.commit();
+
+  g_doing = "analysing the cam (round trip)";
+  const synthesis::CamRoundTrip rt = synthesis::cam_round_trip(spec, scene_file);
+  std::cout << o.spec << ": profile of " << profile.points.size() << " points (spline within "
+            << fmt(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
+            << dxf << ", " << svg << ", " << scene_file << "\n";
+  std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n";
+  std::cout << "  worst deviation of the follower from the law: " << law_value(spec, rt.worst_deviation) << " at cam angle "
+            << angle_value(spec, rt.worst_deviation_at) << " (tolerance " << law_value(spec, spec.tolerance) << ")\n";
+  std::cout << "  largest pressure angle: " << fmt(rt.max_pressure_angle * 180 / pi<double>(), 10) << " deg at cam angle "
+            << angle_value(spec, rt.max_pressure_angle_at) << "\n";
+  std::cout << "  smallest radius of curvature of the profile: " << fmt(rt.min_radius_of_curvature, 10)
+            << (rt.min_radius_of_curvature < 0 ? " (concave)" : "") << " at cam angle " << angle_value(spec, rt.min_radius_at) << "\n";
+  for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
+  const bool ok = rt.problems.empty() && rt.solved == rt.poses && rt.worst_deviation <= spec.tolerance;
+  if (!ok && rt.worst_deviation > spec.tolerance)
+    std::cerr << o.spec << ": the analysed motion deviates from the law by more than the tolerance\n";
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace rollkin::cli
