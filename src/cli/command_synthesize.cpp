@@ -37,7 +37,7 @@ Command synthesize_command(CLI::App& rollkin) {
       ->type_name("PREFIX");
   cam->footer(
       "Computes the cam profile as the envelope of the follower's contour (roller or flat face) under its motion\n"
-      "relative to the turning cam, sampled so that the fitted spline is within a quarter of the tolerance of\n"
+      "relative to the turning cam, sampled so that the fitted spline is within a sixteenth of the tolerance of\n"
       "the true profile. Writes PREFIX.txt (closed point file, the cam's frame), PREFIX.dxf (one SPLINE),\n"
       "PREFIX.svg (cam and follower at the law's start) and PREFIX.json (the scene: revolute 'cam' theta,\n"
       "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing. Then it reads PREFIX.json, solves\n"

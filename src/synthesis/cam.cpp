@@ -86,7 +86,10 @@ EnvelopeProblem<double> cam_envelope_problem(const CamSpec& spec) {
 CamProfile synthesise_cam(const CamSpec& spec) {
   CamProfile out;
   const double length_tolerance = spec.motion == FollowerMotion::Oscillating ? spec.tolerance * spec.arm : spec.tolerance;
-  out.profile_tolerance = length_tolerance / 4;  // margin for the follower's response to the profile's error
+  // A sixteenth of the tolerance: the follower responds to the profile error about one to one, and the contact
+  // normal (pressure angle) and curvature, derivatives of the fitted spline, need the finer sampling to stay
+  // within 1e-6 deg and 1e-5 relative (docs/synthesis.md, "Tolerances").
+  out.profile_tolerance = length_tolerance / 16;
   EnvelopeOptions options{out.profile_tolerance, 360, 400000};
   out.envelope = envelope(cam_envelope_problem(spec), options);
   std::vector<V> pts = out.envelope.points();
@@ -188,7 +191,8 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const std::string& scene_file, 
       continue;
     }
     ++rt.solved;
-    const double deviation = std::abs(result.q(k)[var] - (*spec.law)(theta).s);
+    const double prescribed = (*spec.law)(theta).s;
+    const double deviation = std::abs(result.q(k)[var] - prescribed);
     if (deviation > rt.worst_deviation) {
       rt.worst_deviation = deviation;
       rt.worst_deviation_at = theta;
@@ -201,6 +205,7 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const std::string& scene_file, 
       rt.max_pressure_angle_at = theta;
     }
     const double radius = 1 / c.kappa1;
+    rt.solved_poses.push_back({theta, result.q(k)[var], prescribed, c.pressure_angle, radius});
     if (std::abs(radius) < smallest_abs_radius) {
       smallest_abs_radius = std::abs(radius);
       rt.min_radius_of_curvature = radius;

@@ -85,6 +85,12 @@ struct CamRoundTrip {
   double min_radius_of_curvature = 0;  // of the profile at the contacts (length; negative where concave)
   double min_radius_at = 0;
   std::vector<std::string> problems;   // limits met, poses not solved
+  struct Pose {
+    double theta, analysed, prescribed;  // cam angle (law's), follower variable from the analysis and the law
+    double pressure_angle;               // radians, NaN where the follower does not move
+    double radius_of_curvature;          // of the profile at the contact
+  };
+  std::vector<Pose> solved_poses;
 };
 
 /// Reads the scene at `scene_file`, assembles it, sweeps theta over one turn at `poses` + 1 equally spaced cam

@@ -18,6 +18,7 @@
 //                                  -1 on [5/8, 7/8], -cos(4 pi t) on [7/8, 1]]     peak y' = 2, y'' = 4.888
 //     modified sine       y'' = C [sin(4 pi x) on [0, 1/8], cos(4 pi t / 3) on [1/8, 7/8],
 //                                  -cos(4 pi t) on [7/8, 1]]                      peak y' = 1.76, y'' = 5.528
+// A law may also be given as a function of theta (MotionLaw::from_function), e.g. in closed form.
 // A table of points (theta_i, s_i) over one turn is the periodic C2 cubic spline through them (moment form,
 // as in profile/spline.hpp but on theta itself).
 //
@@ -31,6 +32,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -232,6 +234,14 @@ template <class S> class MotionLaw {
     return law;
   }
 
+  /// A law given by a function of theta (returning s and its three derivatives), 2 pi-periodic; for a law in
+  /// closed form that is neither a list of segments nor a table (library use and tests).
+  static MotionLaw from_function(std::function<LawValue<S>(const S&)> f) {
+    MotionLaw law;
+    law.function_ = std::move(f);
+    return law;
+  }
+
   bool is_table() const { return !table_theta_.empty(); }
   const std::vector<LawSegment<S>>& segments() const { return segments_; }
 
@@ -290,6 +300,7 @@ template <class S> class MotionLaw {
 
   /// theta in [0, 2 pi); `left`: at a join take the piece that ends there (theta = 0 is the turn's end).
   LawValue<S> evaluate(const S& theta, bool left) const {
+    if (function_) return function_(left && theta == S(0) ? S(S(2) * pi<S>()) : theta);
     if (is_table()) return evaluate_table(theta, left);
     std::size_t k = 0;
     while (k + 1 < segments_.size() && (left ? theta > segments_[k].end : theta >= segments_[k].end)) ++k;
@@ -350,6 +361,7 @@ template <class S> class MotionLaw {
   std::vector<LawSegment<S>> segments_;
   std::vector<S> start_s_;
   std::vector<S> table_theta_, table_s_, moments_;
+  std::function<LawValue<S>(const S&)> function_;
 };
 
 /// The kind named `name` (rise_kind_names), or throws std::invalid_argument listing the names.
