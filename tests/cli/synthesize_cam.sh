@@ -1,0 +1,148 @@
+#!/usr/bin/env bash
+# `rollkin synthesize cam`: the round trip and the contract of its outputs, checked from outside.
+#   usage: synthesize_cam.sh PATH/TO/rollkin [PYTHON]   (PYTHON: the one with ezdxf, default /usr/bin/python3)
+#  - a cycloidal rise-dwell-return-dwell cam with an offset roller follower: exit 0; the four outputs exist (PREFIX differs from the spec's stem: PREFIX.json must not be the spec);
+#    `rollkin solve PREFIX.json --csv` has the columns cam.theta and follower.s, and follower.s equals the
+#    cycloidal law computed here in Python (independent closed form) to 1e-9 of the stroke at every degree;
+#    the DXF holds one closed SPLINE (read by ezdxf) whose points lie within the sag of the point file's polygon
+#    (chord^2 / (8 radius): a spline through the points);
+#  - a clockwise cam, an oscillating roller follower (column follower.phi) and a flat face: exit 0;
+#  - a law read from a table file: exit 0;
+#  - an undercut (a roller larger than the pitch curve's radius of curvature): exit 1, the cam angles on
+#    stderr, nothing written;
+#  - bad specs (unknown kind, net lift, unknown key) exit 2 naming the JSON path; an output that would
+#    overwrite the spec exits 2 and leaves the spec as it was.
+# Prints one line per check and "N passed, N failed" last.
+set -u
+BIN=${1:?usage: synthesize_cam.sh ROLLKIN_BINARY [PYTHON]}
+PYTHON=${2:-/usr/bin/python3}
+case "$BIN" in /*) ;; *) BIN="$PWD/$BIN" ;; esac
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/rollkin_synth.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK" || exit 1
+passed=0
+failed=0
+check() {  # check NAME CONDITION-EXIT-STATUS
+  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); echo "ok   $1"; else failed=$((failed + 1)); echo "FAIL $1"; fi
+}
+
+LAW='"law": [{"to": 90, "lift": 15, "kind": "cycloidal"}, {"to": 180, "kind": "dwell"},
+             {"to": 270, "lift": -15, "kind": "cycloidal"}, {"to": 360, "kind": "dwell"}]'
+cat > cam.json <<EOF
+{"units": {"length": "mm", "angle": "deg"}, "base_radius": 40, "rotation": "ccw",
+ "follower": {"motion": "translating", "offset": 12}, "contact": {"roller_radius": 10}, $LAW}
+EOF
+"$BIN" synthesize cam cam.json --out c > out.txt 2> err.txt
+check "cycloidal offset roller cam: exit 0" $?
+grep -q "worst deviation of the follower from the law" out.txt && grep -q "largest pressure angle" out.txt &&
+  grep -q "smallest radius of curvature" out.txt
+check "the round-trip figures are printed" $?
+[ -s c.txt ] && [ -s c.dxf ] && [ -s c.svg ] && [ -s c.json ]
+check "PREFIX.txt, .dxf, .svg and .json written" $?
+"$BIN" solve c.json --csv c.csv > /dev/null 2>&1
+check "rollkin solve PREFIX.json: exit 0" $?
+"$PYTHON" - <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open("c.csv")))
+h, beta = 15.0, math.pi / 2
+def law(t):  # cycloidal rise on [0, 90], dwell, cycloidal return on [180, 270], dwell (degrees)
+    if t <= 90: x = t / 90; return h * (x - math.sin(2 * math.pi * x) / (2 * math.pi))
+    if t <= 180: return h
+    if t <= 270: x = (t - 180) / 90; return h - h * (x - math.sin(2 * math.pi * x) / (2 * math.pi))
+    return 0.0
+worst = max(abs(float(r["follower.s"]) - law(float(r["cam.theta"]))) for r in rows)
+print("  solve's follower.s against the closed form: worst", worst)
+sys.exit(0 if len(rows) == 361 and worst <= 1e-9 * h else 1)
+PY
+check "follower.s of the written scene follows the closed-form law to 1e-9 of the stroke" $?
+"$PYTHON" - <<'PY'
+import math, sys
+import ezdxf
+doc = ezdxf.readfile("c.dxf")
+splines = doc.modelspace().query("SPLINE")
+pts = [tuple(map(float, l.split())) for l in open("c.txt") if l.strip() and not l.startswith("#")]
+size = max(math.hypot(x, y) for x, y in pts)
+ok = len(splines) == 1 and splines[0].closed
+if ok:
+    import numpy as np
+    P = np.array(pts)
+    A, D = P, np.roll(P, -1, axis=0) - P
+    L2 = (D ** 2).sum(1)
+    # Every 7th of 20000 spline points, its distance to the closed polygon of the profile's points: at most the
+    # polygon's sag, chord^2 / (8 radius), the radius of each chord from the circle through its point and the
+    # neighbours (~1e-3 here).
+    Pm, Pp = np.roll(P, 1, axis=0), np.roll(P, -1, axis=0)
+    a, b, c = np.hypot(*(P - Pm).T), np.hypot(*(Pp - P).T), np.hypot(*(Pp - Pm).T)
+    twice_area = np.abs((P - Pm)[:, 0] * (Pp - Pm)[:, 1] - (P - Pm)[:, 1] * (Pp - Pm)[:, 0])
+    radius = a * b * c / (2 * np.maximum(twice_area, 1e-300))
+    sag = float((b ** 2 / (8 * radius)).max())
+    worst = 0.0
+    for q in np.array([(v[0], v[1]) for v in splines[0].construction_tool().approximate(20000)])[::7]:
+        t = np.clip(((q - A) * D).sum(1) / L2, 0, 1)
+        worst = max(worst, float(np.sqrt((((A + t[:, None] * D) - q) ** 2).sum(1)).min()))
+    print("  DXF spline: %d control points, worst distance to the profile's polygon %.3g (largest sag %.3g)" % (len(splines[0].control_points), worst, sag))
+    ok = worst < 1.5 * sag
+sys.exit(0 if ok else 1)
+PY
+check "PREFIX.dxf: one closed SPLINE along the profile (ezdxf)" $?
+
+sed 's/"ccw"/"cw"/' cam.json > cw.json
+"$BIN" synthesize cam cw.json --out cw_out > /dev/null 2>&1
+check "clockwise cam: exit 0" $?
+cat > osc.json <<EOF
+{"units": {"length": "mm", "angle": "deg"}, "base_radius": 40,
+ "follower": {"motion": "oscillating", "pivot": [80, 50], "arm": 80, "start_angle": 180}, "contact": {"roller_radius": 10},
+ "law": [{"to": 120, "lift": 15, "kind": "poly345"}, {"to": 180, "kind": "dwell"},
+         {"to": 300, "lift": -15, "kind": "modified_sine"}, {"to": 360, "kind": "dwell"}]}
+EOF
+"$BIN" synthesize cam osc.json --out osc_out > /dev/null 2>&1 && "$BIN" solve osc_out.json --csv osc.csv > /dev/null 2>&1 &&
+  head -1 osc.csv | grep -q "^cam.theta,follower.phi,"
+check "oscillating roller follower: exit 0, the scene's CSV has cam.theta and follower.phi" $?
+cat > flat.json <<EOF
+{"units": {"length": "mm", "angle": "deg"}, "base_radius": 40, "follower": {"motion": "translating"},
+ "contact": {"flat": true}, $LAW}
+EOF
+"$BIN" synthesize cam flat.json --out flat_out > /dev/null 2>&1
+check "flat-faced follower: exit 0" $?
+"$PYTHON" -c '
+import math
+with open("law.csv", "w") as f:
+    for k in range(0, 361, 2):
+        f.write("%r %r\n" % (k, 6 * (1 - math.cos(math.radians(k)))))'
+cat > table.json <<EOF
+{"units": {"length": "mm"}, "base_radius": 40, "follower": {"motion": "translating"},
+ "contact": {"roller_radius": 10}, "law": {"file": "law.csv"}}
+EOF
+"$BIN" synthesize cam table.json --out table_out > /dev/null 2>&1
+check "law from a table file: exit 0" $?
+
+cat > under.json <<EOF
+{"units": {"length": "mm", "angle": "deg"}, "base_radius": 20, "follower": {"motion": "translating"},
+ "contact": {"roller_radius": 15},
+ "law": [{"to": 30, "lift": 30, "kind": "cycloidal"}, {"to": 180, "kind": "dwell"},
+         {"to": 210, "lift": -30, "kind": "cycloidal"}, {"to": 360, "kind": "dwell"}]}
+EOF
+"$BIN" synthesize cam under.json --out under_out > /dev/null 2> under.err
+status=$?
+[ "$status" -eq 1 ] && grep -q "undercut: at cam angle" under.err && [ ! -e under_out.txt ] && [ ! -e under_out.json ]
+check "undercut: exit 1, located on stderr, nothing written" $?
+
+sed 's/"cycloidal"/"cycloid"/' cam.json > bad_kind.json
+"$BIN" synthesize cam bad_kind.json --out bad > /dev/null 2> bad.err
+[ $? -eq 2 ] && grep -q 'bad_kind.json:law\[0\].kind: unknown kind "cycloid"' bad.err
+check "unknown kind: exit 2 at law[0].kind" $?
+sed 's/"lift": -15/"lift": -14/' cam.json > bad_lift.json
+"$BIN" synthesize cam bad_lift.json --out bad > /dev/null 2> bad.err
+[ $? -eq 2 ] && grep -q "bad_lift.json:law: the lifts add up to" bad.err
+check "net lift: exit 2 at law" $?
+sed 's/"base_radius"/"base_radus"/' cam.json > bad_key.json
+"$BIN" synthesize cam bad_key.json --out bad > /dev/null 2> bad.err
+[ $? -eq 2 ] && grep -q "base_radus" bad.err
+check "unknown key: exit 2 naming it" $?
+cp cam.json keep.json
+"$BIN" synthesize cam keep.json --out keep > /dev/null 2> keep.err
+[ $? -eq 2 ] && cmp -s cam.json keep.json && [ ! -e keep.txt ] && grep -q "keep.json" keep.err
+check "an output that would overwrite the spec: exit 2, spec unchanged, nothing written" $?
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
