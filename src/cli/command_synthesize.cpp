@@ -6,6 +6,7 @@
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/dxf_writer.hpp"
 #include "rollkin/synthesis/cam.hpp"
+#include "rollkin/synthesis/gears.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -21,6 +22,7 @@ struct SynthesizeCamOptions {
 };
 
 int run_synthesize_cam(const SynthesizeCamOptions& o);
+int run_synthesize_gears(const SynthesizeCamOptions& o);
 
 }  // namespace
 
@@ -46,7 +48,21 @@ Command synthesize_command(CLI::App& rollkin) {
       "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
       "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
       "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory.");
-  return {app, [o] { return run_synthesize_cam(*o); }};
+  auto g = std::make_shared<SynthesizeCamOptions>();
+  CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
+  gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
+  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf and PREFIX.json (scene)")
+      ->required()
+      ->type_name("PREFIX");
+  gears->footer(
+      "Samples both pitch curves (r1 = E f'/(1 + f'), r2 = E/(1 + f')) until their fitted splines are within a\n"
+      "sixteenth of the tolerance (times E) of the true curves at every mid-angle, reports whether the pair closes\n"
+      "(f(phi + 360) = f(phi) + 360) and the smallest curvature of each curve (convex or not), writes the curves,\n"
+      "their DXF and the scene rolling them (revolutes gear1, gear2, rolling pair mesh), all or nothing, then\n"
+      "solves that scene over one turn and prints the worst deviation of gear2.phi from -f(gear1.phi).\n"
+      "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
+      "written); 2 bad input; 3 out of memory.");
+  return {app, [o, cam, g] { return cam->parsed() ? run_synthesize_cam(*o) : run_synthesize_gears(*g); }};
 }
 
 namespace {
@@ -162,6 +178,64 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   if (!ok && rt.worst_deviation > spec.tolerance)
     std::cerr << o.spec << ": the analysed motion deviates from the law by more than the tolerance\n";
   return ok ? 0 : 1;
+}
+
+std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
+  std::string out = "# " + what + "\n";
+  for (const auto& p : points) {
+    io::append_double(out, p.x());
+    out += ' ';
+    io::append_double(out, p.y());
+    out += '\n';
+  }
+  return out;
+}
+
+int run_synthesize_gears(const SynthesizeCamOptions& o) {
+  g_doing = "reading the gear spec";
+  const synthesis::GearSpec spec = synthesis::read_gear_spec(o.spec);
+  io::OutputSet outputs(spec.files_read);
+  const std::string f1 = o.out + ".1.txt", f2 = o.out + ".2.txt", dxf = o.out + ".dxf", scene_file = o.out + ".json";
+  const std::size_t i1 = outputs.add("--out (gear 1)", f1), i2 = outputs.add("--out (gear 2)", f2),
+                    i_dxf = outputs.add("--out (DXF)", dxf), i_scene = outputs.add("--out (scene)", scene_file);
+  const std::string deg = io::unit_label(spec.angle_unit);
+  if (std::abs(spec.closure_error) > spec.tolerance) {
+    std::cerr << o.spec << ": the pair does not close: f(phi + " << fmt(io::from_radians(2 * pi<double>(), spec.angle_unit))
+              << ") - f(phi) = " << fmt(io::from_radians(2 * pi<double>() + spec.closure_error, spec.angle_unit), 12) << " " << deg
+              << ", not one turn (gear 2 would not come back to its start after a turn of gear 1); nothing written\n";
+    return 1;
+  }
+  g_doing = "computing the pitch curves";
+  const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
+  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
+  outputs.set(i1, points_text(what + "gear 1 (pivot at the origin)", d.pair.gear1));
+  outputs.set(i2, points_text(what + "gear 2 (pivot at the origin of its frame)", d.pair.gear2));
+  SplineOptions<double> closed;
+  closed.closed = true;
+  outputs.set(i_dxf, io::dxf_text({io::spline_of(SampledProfile<double>(d.pair.gear1, closed), "GEAR1"),
+                                   io::spline_of(SampledProfile<double>(d.pair.gear2, closed), "GEAR2")},
+                                  spec.length_label));
+  outputs.set(i_scene, synthesis::gear_scene(spec, d, std::filesystem::path(f1).filename().string(),
+                                             std::filesystem::path(f2).filename().string()).dump(2) + "\n");
+  g_doing = "writing the output files";
+  outputs.commit();
+  g_doing = "analysing the gears (round trip)";
+  const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
+  std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
+            << fmt(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
+            << scene_file << "\n";
+  for (int gear = 1; gear <= 2; ++gear) {
+    const double kappa = gear == 1 ? d.min_curvature1 : d.min_curvature2, at = gear == 1 ? d.min_curvature1_at : d.min_curvature2_at;
+    std::cout << "  gear " << gear << ": " << (kappa > 0 ? "convex" : "NOT convex (teeth cut on it would undercut)")
+              << ", smallest curvature " << fmt(kappa, 8) << " at polar angle " << fmt(io::from_radians(at, spec.angle_unit), 8)
+              << " " << deg << "\n";
+  }
+  std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n"
+            << "  worst deviation of gear2.phi from -f(gear1.phi): " << fmt(io::from_radians(rt.worst_deviation, spec.angle_unit)) << " "
+            << deg << " at gear1.phi = " << fmt(io::from_radians(rt.worst_deviation_at, spec.angle_unit), 10) << " " << deg
+            << " (tolerance " << fmt(io::from_radians(spec.tolerance, spec.angle_unit)) << " " << deg << ")\n";
+  for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
+  return rt.problems.empty() && rt.worst_deviation <= spec.tolerance ? 0 : 1;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# `rollkin synthesize cam`: the round trip and the contract of its outputs, checked from outside.
+# `rollkin synthesize cam` and `rollkin synthesize gears`: the round trip and the contract of their outputs,
+# checked from outside.
 #   usage: synthesize_cam.sh PATH/TO/rollkin [PYTHON]   (PYTHON: the one with ezdxf, default /usr/bin/python3)
 #  - a cycloidal rise-dwell-return-dwell cam with an offset roller follower: exit 0; the four outputs exist (PREFIX differs from the spec's stem: PREFIX.json must not be the spec);
 #    `rollkin solve PREFIX.json --csv` has the columns cam.theta and follower.s, and follower.s equals the
@@ -11,7 +12,9 @@
 #  - an undercut (a roller larger than the pitch curve's radius of curvature): exit 1, the cam angles on
 #    stderr, nothing written;
 #  - bad specs (unknown kind, net lift, unknown key) exit 2 naming the JSON path; an output that would
-#    overwrite the spec exits 2 and leaves the spec as it was.
+#    overwrite the spec exits 2 and leaves the spec as it was;
+#  - twin elliptical gears: exit 0, convex; the written scene solved by `rollkin solve` keeps gear2.phi on the
+#    closed form tan(f/2) = 3 tan(phi1/2) (Python) to 1e-9 of a turn; a table that does not close: exit 1.
 # Prints one line per check and "N passed, N failed" last.
 set -u
 BIN=${1:?usage: synthesize_cam.sh ROLLKIN_BINARY [PYTHON]}
@@ -143,6 +146,38 @@ cp cam.json keep.json
 "$BIN" synthesize cam keep.json --out keep > /dev/null 2> keep.err
 [ $? -eq 2 ] && cmp -s cam.json keep.json && [ ! -e keep.txt ] && grep -q "keep.json" keep.err
 check "an output that would overwrite the spec: exit 2, spec unchanged, nothing written" $?
+
+# ---- rollkin synthesize gears ------------------------------------------------------------------------------
+cat > ell.json <<EOF
+{"units": {"length": "mm", "angle": "deg"}, "centre_distance": 80, "transmission": {"kind": "elliptical", "eccentricity": 0.5}}
+EOF
+"$BIN" synthesize gears ell.json --out gears > gears.out 2>&1 && [ -s gears.1.txt ] && [ -s gears.2.txt ] && [ -s gears.dxf ] &&
+  grep -q "gear 1: convex" gears.out && "$BIN" solve gears.json --csv gears.csv > /dev/null 2>&1 &&
+  head -1 gears.csv | grep -q "^gear1.phi,gear2.phi,"
+check "elliptical gears: exit 0, convex, the scene's CSV has gear1.phi and gear2.phi" $?
+"$PYTHON" - <<'PY'
+import csv, math, sys
+k = 3.0  # (1 + e) / (1 - e), e = 0.5: tan(f / 2) = k tan(phi1 / 2), gear 2 turning back (gear2.phi = -f)
+worst = 0.0
+for r in csv.DictReader(open("gears.csv")):
+    p1, f = math.radians(float(r["gear1.phi"])), -math.radians(float(r["gear2.phi"]))
+    closed = 2 * math.atan2(k * math.sin(p1 / 2), math.cos(p1 / 2))
+    worst = max(worst, abs(math.remainder(f - closed, 2 * math.pi)))
+print("  gear2.phi against the closed form: worst %.3g rad" % worst)
+sys.exit(0 if worst < 1e-9 * 2 * math.pi else 1)
+PY
+check "gear2.phi of the written scene follows the elliptical closed form to 1e-9 of a turn" $?
+"$PYTHON" -c '
+import math
+with open("open_f.txt", "w") as f:
+    for d in range(0, 361, 10):
+        f.write("%d %r\n" % (d, d * 1.01 + 5 * math.sin(math.radians(d))))'
+cat > open.json <<EOF
+{"units": {"angle": "deg"}, "centre_distance": 50, "transmission": {"file": "open_f.txt"}}
+EOF
+"$BIN" synthesize gears open.json --out open_out > /dev/null 2> open.err
+[ $? -eq 1 ] && grep -q "does not close" open.err && [ ! -e open_out.1.txt ]
+check "a transmission that does not close: exit 1, reported, nothing written" $?
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
