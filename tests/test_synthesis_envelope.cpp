@@ -8,7 +8,9 @@
 //    circle of radius a - r; the spline fitted through the samples stays within the stated tolerance of it
 //    (checked densely, not only at the mid-poses the engine checks);
 //  - an undercut: a roller larger than the smallest radius of curvature of the pitch curve; the engine's
-//    folds against the cam angles where the pitch curve's radius of curvature (closed form) equals r, 1e-6.
+//    folds against the cam angles where the pitch curve's radius of curvature (closed form) equals r, 1e-6;
+//  - a straight rack flank rolled with its pitch line on a pitch circle envelopes the involute of the base
+//    circle: theta - inv(alpha) the same at every point to 1e-10.
 #define BOOST_TEST_MODULE synthesis_envelope
 #include <boost/test/unit_test.hpp>
 
@@ -190,4 +192,45 @@ BOOST_AUTO_TEST_CASE(undercut_roller_folds_where_the_pitch_radius_equals_the_rol
     BOOST_TEST_INFO("fold " << k << " at " << folds[k] / kDeg << " deg, closed form " << truth[k] / kDeg);
     BOOST_TEST(std::abs(folds[k] - truth[k]) < 1e-6 * kDeg);
   }
+}
+
+// A straight rack flank (pressure angle a0, through the pitch point) under the rolling of the rack's pitch line
+// on the gear's pitch circle (radius Rp): the envelope on the gear is the involute of the base circle
+// Rb = Rp cos(a0). An involute's point at radius rho lies at polar angle theta0 + inv(alpha), cos(alpha) =
+// Rb / rho, inv(alpha) = tan(alpha) - alpha: theta - inv(alpha) is the same for every point (to 1e-10).
+BOOST_AUTO_TEST_CASE(rack_flank_generates_the_involute) {
+  const double Rp = 50, a0 = 20 * kDeg, Rb = Rp * std::cos(a0);
+  EnvelopeProblem<double> pr;
+  const V dir(std::sin(a0), -std::cos(a0));
+  pr.contour = [dir](const double& u) {
+    Jet<double> j;
+    j.p = u * dir;
+    j.d1 = dir;
+    return j;
+  };
+  // The gear turns by phi about its centre; the rack (pitch line y = Rp) moves by -Rp phi along x.
+  pr.motion = [Rp](const double& phi) {
+    return relative_to_turning_frame<double>(phi, 1, 0, 0, 0, 0, V(-Rp * phi, Rp), V(-Rp, 0), V(0, 0));
+  };
+  // The contact runs along the line of action at Rb per radian; it reaches the base circle (the involute's cusp)
+  // Rp sin(a0) from the pitch point, at |phi| = tan(a0) = 20.85 deg: stay within 15 deg.
+  pr.t_begin = -15 * kDeg;
+  pr.t_end = 15 * kDeg;
+  pr.u_guess = 0;
+  pr.u_scale = 10;
+  const Envelope<double> env = envelope(pr, EnvelopeOptions{1e-8, 64});
+  BOOST_TEST(env.defects.empty());
+  BOOST_TEST_REQUIRE(env.samples.size() >= 64u);
+  std::vector<double> theta0;
+  for (const auto& s : env.samples) {
+    const double rho = s.point.norm();
+    BOOST_TEST(rho >= Rb * (1 - 1e-12));
+    const double alpha = std::acos(std::min(1.0, Rb / rho)), inv = std::tan(alpha) - alpha;
+    const double theta = std::atan2(s.point.y(), s.point.x());
+    theta0.push_back(theta - inv);  // this flank unwinds counter-clockwise from the base circle
+  }
+  double spread = 0;
+  for (double t : theta0) spread = std::max(spread, std::abs(t - theta0.front()));
+  BOOST_TEST_INFO("spread of theta - inv(alpha): " << spread);
+  BOOST_TEST(spread < 1e-10);
 }
