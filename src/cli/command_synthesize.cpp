@@ -7,6 +7,7 @@
 #include "rollkin/io/dxf_writer.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
+#include "rollkin/synthesis/scene_envelope.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -23,6 +24,16 @@ struct SynthesizeCamOptions {
 
 int run_synthesize_cam(const SynthesizeCamOptions& o);
 int run_synthesize_gears(const SynthesizeCamOptions& o);
+
+struct SynthesizeEnvelopeOptions {
+  SweepRequest sweep;
+  std::vector<std::string> links;  // A B
+  std::string contour;             // B.name
+  std::string out;
+  std::optional<double> tolerance, start;
+  std::string tolerance_text, start_text;
+};
+int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o);
 
 }  // namespace
 
@@ -62,7 +73,28 @@ Command synthesize_command(CLI::App& rollkin) {
       "solves that scene over one turn and prints the worst deviation of gear2.phi from -f(gear1.phi).\n"
       "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
       "written); 2 bad input; 3 out of memory.");
-  return {app, [o, cam, g] { return cam->parsed() ? run_synthesize_cam(*o) : run_synthesize_gears(*g); }};
+  auto e = std::make_shared<SynthesizeEnvelopeOptions>();
+  CLI::App* env = app->add_subcommand("envelope", "the conjugate on link A of a contour of link B under the scene's sweep");
+  add_sweep_options(*env, e->sweep);
+  env->add_option("--links", e->links, "the links A (carries the envelope) and B (carries the contour)")->expected(2)->required()->type_name("A B");
+  env->add_option("--contour", e->contour, "B's contour, as the scene's pairs name it (B.name)")->required()->type_name("B.NAME");
+  add_output(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
+  add_number(*env, "--tolerance", e->tolerance, e->tolerance_text,
+             "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
+  add_number(*env, "--start", e->start, e->start_text,
+             "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
+  env->footer(
+      "Solves the sweep, interpolates B's pose relative to A (cubic Hermite in the input, from poses and rates)\n"
+      "and computes the envelope of B's contour from the equation of meshing n . v_rel = 0, sampled until the\n"
+      "spline through the points is within the tolerance at every mid-pose (docs/synthesis.md). Writes PREFIX.txt\n"
+      "(a point file, closed when the relative motion is periodic) and PREFIX.dxf (one SPLINE), all or nothing.\n"
+      "Exit status: 0 written; 1 the envelope folds (undercut, cusp) or does not exist somewhere (the inputs on\n"
+      "stderr; the points found are still written, the DXF not); 2 bad input; 3 out of memory.");
+  return {app, [o, cam, g, gears, e] {
+            if (cam->parsed()) return run_synthesize_cam(*o);
+            if (gears->parsed()) return run_synthesize_gears(*g);
+            return run_synthesize_envelope(*e);
+          }};
 }
 
 namespace {
@@ -236,6 +268,53 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
             << " (tolerance " << fmt(io::from_radians(spec.tolerance, spec.angle_unit)) << " " << deg << ")\n";
   for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
   return rt.problems.empty() && rt.worst_deviation <= spec.tolerance ? 0 : 1;
+}
+
+int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
+  if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
+  const std::string txt = o.out + ".txt", dxf = o.out + ".dxf";
+  SweepRun run(o.sweep, {{"--out (points)", txt}, {"--out (DXF)", dxf}});
+  const io::Scene& scene = run.scene;
+  const Mechanism<double>& m = scene.mechanism;
+  const int a = m.find_link(o.links[0]), b = m.find_link(o.links[1]);
+  if (a < 0 || b < 0) throw UsageError("--links: no link \"" + (a < 0 ? o.links[0] : o.links[1]) + "\" in the scene");
+  const int contour = m.find_contour(o.contour);
+  if (contour < 0 || m.contours[contour].link() != b)
+    throw UsageError("--contour: no contour \"" + o.contour + "\" on link \"" + o.links[1] + "\" (give it as " + o.links[1] + ".NAME)");
+  if (o.tolerance && !(*o.tolerance > 0)) throw UsageError("--tolerance: expected a distance > 0, got " + o.tolerance_text);
+  SolveData<double> sd(m);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "solving the sweep";
+  const SweepResult<double> result = sweep(m, sd, q, assembly, run.sweep.driver, run.inputs);
+  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, run.sweep, l) << "\n";
+  g_doing = "computing the envelope";
+  const synthesis::SweepMotion motion(m, result, a, b);
+  const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
+  const double tol = o.tolerance ? *o.tolerance : 1e-9 * m.length_scale;
+  const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  const std::vector<Vec2<double>> pts = env.points();
+  run.set_output("--out (points)", [&] {
+    return points_text("envelope of " + o.contour + " in the frame of link " + o.links[0] + ", written by rollkin synthesize envelope from " +
+                           scene.file + (env.closed ? " (closed)" : " (open)"),
+                       pts);
+  });
+  const bool drawable = env.defects.empty() && pts.size() >= 4;
+  if (drawable) {
+    SplineOptions<double> so;
+    so.closed = env.closed;
+    run.set_output("--out (DXF)", [&] { return io::dxf_text({io::spline_of(SampledProfile<double>(pts, so), "ENVELOPE")}, scene.length_unit); });
+  } else {
+    run.omit_output("--out (DXF)");
+  }
+  g_doing = "writing the output files";
+  run.outputs.commit();
+  std::cout << scene.file << ": envelope of " << o.contour << " relative to link " << o.links[0] << ": " << pts.size() << " points"
+            << (env.closed ? " (closed)" : " (open)") << ", spline within " << fmt(env.max_midpoint_deviation, 3)
+            << " at every mid-pose (tolerance " << fmt(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
+  for (const auto& d : env.defects)
+    std::cerr << scene.file << ": at " << input_text(scene, run.sweep, d.t) << ": " << d.what << "\n";
+  return env.defects.empty() && result.limits.empty() ? 0 : 1;
 }
 
 }  // namespace

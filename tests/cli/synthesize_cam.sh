@@ -7,6 +7,8 @@
 #    cycloidal law computed here in Python (independent closed form) to 1e-9 of the stroke at every degree;
 #    the DXF holds one closed SPLINE (read by ezdxf) whose points lie within the sag of the point file's polygon
 #    (chord^2 / (8 radius): a spline through the points);
+#  - PREFIX.txt against the closed-form profile (tests/cli/synthesis_closed_form_cam.py); `synthesize envelope`
+#    of the roller under the written scene's sweep gives that profile back;
 #  - a clockwise cam, an oscillating roller follower (column follower.phi) and a flat face: exit 0;
 #  - a law read from a table file: exit 0;
 #  - an undercut (a roller larger than the pitch curve's radius of curvature): exit 1, the cam angles on
@@ -20,6 +22,7 @@ set -u
 BIN=${1:?usage: synthesize_cam.sh ROLLKIN_BINARY [PYTHON]}
 PYTHON=${2:-/usr/bin/python3}
 case "$BIN" in /*) ;; *) BIN="$PWD/$BIN" ;; esac
+HERE=$(cd "$(dirname "$0")" && pwd)
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/rollkin_synth.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
@@ -88,6 +91,19 @@ if ok:
 sys.exit(0 if ok else 1)
 PY
 check "PREFIX.dxf: one closed SPLINE along the profile (ezdxf)" $?
+
+# The profile's points against the closed-form profile, and the envelope of the roller under the written
+# scene's own motion (rollkin synthesize envelope) against it too: the cam comes back from its analysis.
+"$PYTHON" "$HERE/synthesis_closed_form_cam.py" c.txt 12 5e-8
+check "PREFIX.txt against the closed-form cycloidal cam profile (to the dense polygon's sag)" $?
+"$BIN" synthesize envelope c.json --links cam follower --contour follower.roller --out env --step 0.1 --tolerance 1e-8 > env.out 2>&1 &&
+  grep -q "(closed)" env.out && [ -s env.txt ] && [ -s env.dxf ]
+check "synthesize envelope of the written scene: exit 0, closed, points and DXF" $?
+"$PYTHON" "$HERE/synthesis_closed_form_cam.py" env.txt 12 1e-7
+check "the envelope of the roller under the analysed motion is the closed-form cam profile" $?
+"$BIN" synthesize envelope c.json --links cam follower --contour follower.nothing --out env2 > /dev/null 2> env2.err
+[ $? -eq 2 ] && grep -q 'no contour "follower.nothing" on link "follower"' env2.err && [ ! -e env2.txt ]
+check "synthesize envelope with an unknown contour: exit 2, nothing written" $?
 
 sed 's/"ccw"/"cw"/' cam.json > cw.json
 "$BIN" synthesize cam cw.json --out cw_out > /dev/null 2>&1
