@@ -165,8 +165,11 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
 }
 
 CamRoundTrip cam_round_trip(const CamSpec& spec, const std::string& scene_file, std::size_t poses) {
+  return cam_round_trip(spec, io::load_scene(scene_file), poses);
+}
+
+CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::size_t poses) {
   CamRoundTrip rt;
-  const io::Scene scene = io::load_scene(scene_file);
   const Mechanism<double>& m = scene.mechanism;
   const std::string follower_variable = spec.motion == FollowerMotion::Translating ? "follower.s" : "follower.phi";
   const int var = m.find_variable(follower_variable);

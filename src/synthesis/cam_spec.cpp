@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 class CamSpecReader {
  public:
-  CamSpecReader(const json& root, const std::string& file) : root_(root), js_(file) {}
+  CamSpecReader(const json& root, const std::string& file, std::string dir) : root_(root), js_(file), dir_(std::move(dir)) {}
 
   CamSpec read() {
     CamSpec spec;
@@ -194,7 +194,7 @@ class CamSpecReader {
   }
 
   void read_law_file(CamSpec& spec, const std::string& name, double lift_unit) {
-    const fs::path path = fs::path(js_.file()).parent_path() / name;
+    const fs::path path = fs::path(dir_) / name;
     spec.files_read.push_back(path.string());
     const PointSamples rows = read_point_samples(path.string(), 4);
     std::vector<double> theta, s;
@@ -211,6 +211,7 @@ class CamSpecReader {
 
   const json& root_;
   io::JsonAccess js_;
+  std::string dir_;
 };
 
 }  // namespace
@@ -218,7 +219,13 @@ class CamSpecReader {
 CamSpec read_cam_spec(const std::string& path) {
   const std::string text = io::read_input_file(path, "cam spec");
   const json root = io::parse_json_document(text, path);
-  return CamSpecReader(root, path).read();
+  return CamSpecReader(root, path, fs::path(path).parent_path().string()).read();
+}
+
+CamSpec cam_spec_from_document(const nlohmann::ordered_json& document, const std::string& file, const std::string& dir) {
+  CamSpec spec = CamSpecReader(document, file, dir).read();
+  spec.files_read.erase(spec.files_read.begin());  // no spec file was read
+  return spec;
 }
 
 }  // namespace rollkin::synthesis

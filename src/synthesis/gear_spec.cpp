@@ -13,12 +13,17 @@
 namespace rollkin::synthesis {
 
 GearSpec read_gear_spec(const std::string& path) {
+  GearSpec spec = gear_spec_from_document(io::parse_json_document(io::read_input_file(path, "gear spec"), path), path,
+                                          std::filesystem::path(path).parent_path().string());
+  spec.files_read.insert(spec.files_read.begin(), path);
+  return spec;
+}
+
+GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::string& path, const std::string& dir) {
   using io::json;
-  const json root = io::parse_json_document(io::read_input_file(path, "gear spec"), path);
   const io::JsonAccess js(path);
   GearSpec spec;
   spec.file = path;
-  spec.files_read.push_back(path);
   js.object(root, "", {"description", "units", "centre_distance", "transmission", "tolerance"});
   if (const json* u = io::JsonAccess::get(root, "units")) {
     js.object(*u, "units", {"length", "angle"});
@@ -40,7 +45,7 @@ GearSpec read_gear_spec(const std::string& path) {
     js.object(t, "transmission", {"file"});
     spec.kind = "table";
     const std::string name = js.string(t["file"], "transmission.file", "the table's file name");
-    const std::filesystem::path file = std::filesystem::path(path).parent_path() / name;
+    const std::filesystem::path file = std::filesystem::path(dir) / name;
     spec.files_read.push_back(file.string());
     const PointSamples rows = read_point_samples(file.string(), 5);
     std::vector<double> p, g;

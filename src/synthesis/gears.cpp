@@ -139,9 +139,12 @@ json gear_scene(const GearSpec& spec, const GearDesign& d, const std::string& fi
 }
 
 GearRoundTrip gear_round_trip(const GearSpec& spec, const std::string& scene_file) {
+  return gear_round_trip(spec, io::load_scene(scene_file));
+}
+
+GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene) {
   const TransmissionFunction<double> t = transmission(spec);
   GearRoundTrip rt;
-  const io::Scene scene = io::load_scene(scene_file);
   const Mechanism<double>& m = scene.mechanism;
   const int var = m.find_variable("gear2.phi");
   if (var < 0) throw std::logic_error("gear_round_trip: the scene has no gear2.phi");

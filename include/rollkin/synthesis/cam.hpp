@@ -13,6 +13,7 @@
 // roller's centre (or at the face's point above the guide).
 #pragma once
 
+#include "rollkin/io/scene.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/synthesis/envelope.hpp"
 #include "rollkin/synthesis/motion_law.hpp"
@@ -51,6 +52,9 @@ struct CamSpec {
 
 /// Reads and checks a spec file; every problem an InputError naming the file and the JSON path.
 CamSpec read_cam_spec(const std::string& path);
+
+/// The same for a document in memory (`file` names it in messages; a law file is read relative to `dir`).
+CamSpec cam_spec_from_document(const nlohmann::ordered_json& document, const std::string& file, const std::string& dir);
 
 /// The profile and where the follower starts.
 struct CamProfile {
@@ -97,5 +101,8 @@ struct CamRoundTrip {
 /// angles (997 by default: a prime, so that the poses fall between the profile's samples) and compares the
 /// follower's variable with the law.
 CamRoundTrip cam_round_trip(const CamSpec& spec, const std::string& scene_file, std::size_t poses = 997);
+
+/// The same for a scene already built (e.g. with the profile's points inline).
+CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::size_t poses = 997);
 
 }  // namespace rollkin::synthesis

@@ -12,6 +12,7 @@
 //   table's last phi2 must be its first + 2 pi (a last row at phi1 + 2 pi), else it is reported.
 #pragma once
 
+#include "rollkin/io/scene.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/synthesis.hpp"
 #include "rollkin/synthesis/motion_law.hpp"
@@ -41,6 +42,9 @@ struct GearSpec {
 /// Reads and checks a gear spec: InputError with the JSON path for every problem.
 GearSpec read_gear_spec(const std::string& path);
 
+/// The same for a document in memory (`file` names it in messages; a table file is read relative to `dir`).
+GearSpec gear_spec_from_document(const nlohmann::ordered_json& document, const std::string& file, const std::string& dir);
+
 /// f and f' of the spec (TransmissionFunction of synthesis.hpp).
 TransmissionFunction<double> transmission(const GearSpec& spec);
 
@@ -68,5 +72,8 @@ struct GearRoundTrip {
 
 /// Reads the scene back, sweeps gear1.phi over one turn at 997 + 1 angles and compares gear2.phi with -f.
 GearRoundTrip gear_round_trip(const GearSpec& spec, const std::string& scene_file);
+
+/// The same for a scene already built.
+GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene);
 
 }  // namespace rollkin::synthesis
