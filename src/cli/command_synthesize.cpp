@@ -40,7 +40,7 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o);
 Command synthesize_command(CLI::App& rollkin) {
   auto o = std::make_shared<SynthesizeCamOptions>();
   CLI::App* app = rollkin.add_subcommand("synthesize", "the contour that gives a prescribed motion (cams), proved by analysing it");
-  app->require_subcommand(1);
+  app->require_subcommand(0, 1);  // none: a UsageError naming the three (run below)
   CLI::App* cam = app->add_subcommand("cam", "a disk cam from a motion law and a follower (docs/synthesis.md)");
   cam->add_option("SPEC", o->spec, "the cam spec (JSON: base_radius, rotation, follower, contact, law, tolerance)")
       ->required()
@@ -90,10 +90,11 @@ Command synthesize_command(CLI::App& rollkin) {
       "(a point file, closed when the relative motion is periodic) and PREFIX.dxf (one SPLINE), all or nothing.\n"
       "Exit status: 0 written; 1 the envelope folds (undercut, cusp) or does not exist somewhere (the inputs on\n"
       "stderr; the points found are still written, the DXF not); 2 bad input; 3 out of memory.");
-  return {app, [o, cam, g, gears, e] {
+  return {app, [o, cam, g, gears, e, env] {
             if (cam->parsed()) return run_synthesize_cam(*o);
             if (gears->parsed()) return run_synthesize_gears(*g);
-            return run_synthesize_envelope(*e);
+            if (env->parsed()) return run_synthesize_envelope(*e);
+            throw UsageError("synthesize: expected what to synthesize: cam, gears or envelope");
           }};
 }
 

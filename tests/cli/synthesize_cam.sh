@@ -16,7 +16,8 @@
 #  - bad specs (unknown kind, net lift, unknown key) exit 2 naming the JSON path; an output that would
 #    overwrite the spec exits 2 and leaves the spec as it was;
 #  - twin elliptical gears: exit 0, convex; the written scene solved by `rollkin solve` keeps gear2.phi on the
-#    closed form tan(f/2) = 3 tan(phi1/2) (Python) to 1e-9 of a turn; a table that does not close: exit 1.
+#    closed form tan(f/2) = 3 tan(phi1/2) (Python) to 1e-9 of a turn; a table that does not close: exit 1;
+#  - usage errors of `synthesize` (no what, an unknown what, an unknown option) exit 2 naming what is expected.
 # Prints one line per check and "N passed, N failed" last.
 set -u
 BIN=${1:?usage: synthesize_cam.sh ROLLKIN_BINARY [PYTHON]}
@@ -194,6 +195,17 @@ EOF
 "$BIN" synthesize gears open.json --out open_out > /dev/null 2> open.err
 [ $? -eq 1 ] && grep -q "does not close" open.err && [ ! -e open_out.1.txt ]
 check "a transmission that does not close: exit 1, reported, nothing written" $?
+
+# ---- command-line usage ----------------------------------------------------------------------------------
+"$BIN" synthesize > /dev/null 2> use.err
+[ $? -eq 2 ] && grep -q "expected what to synthesize: cam, gears or envelope" use.err
+check "synthesize without what: exit 2 naming cam, gears, envelope" $?
+"$BIN" synthesize bogus x > /dev/null 2> use.err
+[ $? -eq 2 ] && grep -q 'unknown synthesize command "bogus"; expected one of cam, gears, envelope' use.err
+check "synthesize with an unknown what: exit 2 naming it and the three" $?
+"$BIN" synthesize cam cam.json --out u --bogus > /dev/null 2> use.err
+[ $? -eq 2 ] && grep -q 'unknown option "--bogus" for synthesize cam' use.err && grep -q "rollkin synthesize cam --help" use.err
+check "synthesize cam with an unknown option: exit 2 naming it" $?
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
