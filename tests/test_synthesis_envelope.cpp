@@ -8,7 +8,8 @@
 //    circle of radius a - r; the spline fitted through the samples stays within the stated tolerance of it
 //    (checked densely, not only at the mid-poses the engine checks);
 //  - an undercut: a roller larger than the smallest radius of curvature of the pitch curve; the engine's
-//    folds against the cam angles where the pitch curve's radius of curvature (closed form) equals r, 1e-6;
+//    folds against the cam angles where the pitch curve's radius of curvature (closed form) equals r, 1e-6,
+//    also from a first grid coarser than the undercut regions;
 //  - a straight rack flank rolled with its pitch line on a pitch circle envelopes the involute of the base
 //    circle: theta - inv(alpha) the same at every point to 1e-10.
 #define BOOST_TEST_MODULE synthesis_envelope
@@ -192,6 +193,11 @@ BOOST_AUTO_TEST_CASE(undercut_roller_folds_where_the_pitch_radius_equals_the_rol
     BOOST_TEST_INFO("fold " << k << " at " << folds[k] / kDeg << " deg, closed form " << truth[k] / kDeg);
     BOOST_TEST(std::abs(folds[k] - truth[k]) < 1e-6 * kDeg);
   }
+  // From a first grid of 45 deg, coarser than the undercut regions (about 7 deg wide): the folds show between
+  // the refined samples and are found all the same.
+  const Envelope<double> coarse = envelope(roller_problem(law, e, s0, r), EnvelopeOptions{1e-6, 8});
+  BOOST_TEST_REQUIRE(coarse.defects.size() == truth.size());
+  for (std::size_t k = 0; k < truth.size(); ++k) BOOST_TEST(std::abs(coarse.defects[k].t - truth[k]) < 1e-6 * kDeg);
 }
 
 // A straight rack flank (pressure angle a0, through the pitch point) under the rolling of the rack's pitch line

@@ -22,7 +22,8 @@
 // Sampling: the envelope is sampled at poses t_k (an even grid refined by halving), fitted by the chord-length
 // C2 spline a `samples` contour uses (profile/spline.hpp), and each interval is checked at its mid-pose: the
 // distance from X(t_mid) to the spline (found by Newton on the spline's parameter) must not exceed the
-// tolerance, or the mid-pose is added and the fit checked again.
+// tolerance, or the mid-pose is added and the fit checked again. The refined samples are checked for folds
+// once more (a fold narrower than the first grid's step shows only between them).
 #pragma once
 
 #include "rollkin/profile/jet.hpp"
@@ -271,18 +272,22 @@ template <class S> Envelope<S> envelope(const EnvelopeProblem<S>& pr, const Enve
   auto [samples, gaps] = solve_all(ts);
   env.defects = gaps;
   // Folds: sign changes of the envelope's speed between consecutive samples (and across the seam).
-  const std::size_t n = samples.size();
-  for (std::size_t k = 0; k + 1 < n + (pr.periodic ? 1 : 0) && n > 1; ++k) {
-    EnvelopeSample<S> a = samples[k], b = samples[(k + 1) % n];
-    if (k + 1 == n) b.t += pr.t_end - pr.t_begin;
-    if ((a.speed < S(0)) != (b.speed < S(0))) {
-      const EnvelopeSample<S> at = detail::bisect(pr, a, b, [](const EnvelopeSample<S>& s) { return s.speed; });
-      env.defects.push_back({at.t, at.point,
-                             std::string("the envelope folds back (cusp): its speed along the contour changes sign") +
-                                 (a.speed > S(0) ? " from + to -" : " from - to +")});
+  auto find_folds = [&](const std::vector<EnvelopeSample<S>>& list) {
+    const std::size_t count = list.size();
+    for (std::size_t k = 0; k + 1 < count + (pr.periodic ? 1 : 0) && count > 1; ++k) {
+      EnvelopeSample<S> a = list[k], b = list[(k + 1) % count];
+      if (k + 1 == count) b.t += pr.t_end - pr.t_begin;
+      if ((a.speed < S(0)) != (b.speed < S(0))) {
+        const EnvelopeSample<S> at = detail::bisect(pr, a, b, [](const EnvelopeSample<S>& s) { return s.speed; });
+        env.defects.push_back({at.t, at.point,
+                               std::string("the envelope folds back (cusp): its speed along the contour changes sign") +
+                                   (a.speed > S(0) ? " from + to -" : " from - to +")});
+      }
     }
-  }
-  std::sort(env.defects.begin(), env.defects.end(), [](const auto& x, const auto& y) { return x.t < y.t; });
+    std::sort(env.defects.begin(), env.defects.end(), [](const auto& x, const auto& y) { return x.t < y.t; });
+  };
+  find_folds(samples);
+  const std::size_t n = samples.size();
   if (!env.defects.empty() || n < 4) {
     env.samples = samples;
     return env;
@@ -317,6 +322,7 @@ template <class S> Envelope<S> envelope(const EnvelopeProblem<S>& pr, const Enve
                                " samples needed for the tolerance " + std::to_string(options.tolerance));
     samples = std::move(refined);
   }
+  find_folds(samples);  // a fold narrower than the first grid shows between the refined samples
   env.samples = samples;
   return env;
 }
