@@ -196,6 +196,22 @@ EOF
 [ $? -eq 1 ] && grep -q "does not close" open.err && [ ! -e open_out.1.txt ]
 check "a transmission that does not close: exit 1, reported, nothing written" $?
 
+printf 'theta,s\n0 0\n90 1\n180 2\n270 1\n' > hdr_law.txt
+cat > hdr.json <<EOF
+{"base_radius": 40, "follower": {"motion": "translating"}, "contact": {"roller_radius": 10}, "law": {"file": "hdr_law.txt"}}
+EOF
+"$BIN" synthesize cam hdr.json --out hdr_out > /dev/null 2> hdr.err
+[ $? -eq 2 ] && grep -q "hdr_law.txt:1:" hdr.err && grep -q "a law file is read as a point file" hdr.err
+check "a law file with a header other than x y: exit 2 at its line, saying what the columns are" $?
+echo '{"centre_distance": 80, "transmission": {"kind": "elliptical", "eccentricity": 1}}' > g_bad1.json
+"$BIN" synthesize gears g_bad1.json --out g1_out > /dev/null 2> g.err
+[ $? -eq 2 ] && grep -q "g_bad1.json:transmission.eccentricity: expected a number in \[0, 1)" g.err
+check "gears: eccentricity 1 is refused at its path" $?
+echo '{"centre_distance": 80, "transmission": {"kind": "sinusoidal", "k": 0.2}, "extra": 1}' > g_bad2.json
+"$BIN" synthesize gears g_bad2.json --out g2_out > /dev/null 2> g.err
+[ $? -eq 2 ] && grep -q 'g_bad2.json:extra: unknown key "extra"' g.err
+check "gears: an unknown key is refused" $?
+
 # ---- command-line usage ----------------------------------------------------------------------------------
 "$BIN" synthesize > /dev/null 2> use.err
 [ $? -eq 2 ] && grep -q "expected what to synthesize: cam, gears or envelope" use.err
