@@ -9,7 +9,9 @@
 //    poses between the samples) reproduces the law to 1e-9 of the stroke and the pressure angle to 1e-6 deg
 //    against atan(|s' - w e| / (y0 + s)) (w = +1 ccw, -1 cw: the common normal passes through the relative
 //    instant centre (w s', 0) and the roller's centre);
-//  - an undercut: the folds of a roller larger than the pitch curve's radius of curvature are reported.
+//  - an undercut: the folds of a roller larger than the pitch curve's radius of curvature are reported;
+//  - "contact": {"contour"}: the roller, the flat face and the oscillating roller given as contours give the same
+//    profiles (1e-12); a mushroom follower by round trip; a bad contour reported at contact.contour.
 #define BOOST_TEST_MODULE synthesis_cam
 #include <boost/test/unit_test.hpp>
 
@@ -19,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 using namespace rollkin;
 using namespace rollkin::synthesis;
@@ -158,4 +161,72 @@ BOOST_AUTO_TEST_CASE(an_undercut_profile_is_reported) {
   BOOST_TEST(small.envelope.defects.empty());
   const CamProfile large = synthesise_cam(translating_roller(20, 15, 0, 1, law));
   BOOST_TEST(large.envelope.defects.size() == 4u);  // two folds in the rise, two in the return
+}
+
+namespace {
+
+CamSpec spec_from_text(const std::string& text) {
+  return cam_spec_from_document(nlohmann::ordered_json::parse(text), "spec.json", ROLLKIN_BINARY_DIR);
+}
+
+const char* kLaw = R"("law": [{"to": 90, "lift": 15, "kind": "cycloidal"}, {"to": 180, "kind": "dwell"},
+                             {"to": 270, "lift": -15, "kind": "cycloidal"}, {"to": 360, "kind": "dwell"}])";
+
+/// Largest distance between two profiles' points (the same sampling when the same envelope is computed).
+double largest_difference(const CamProfile& a, const CamProfile& b) {
+  if (a.points.size() != b.points.size()) return std::numeric_limits<double>::infinity();
+  double worst = 0;
+  for (std::size_t k = 0; k < a.points.size(); ++k) worst = std::max(worst, (a.points[k] - b.points[k]).norm());
+  return worst;
+}
+
+}  // namespace
+
+// "contact": {"contour": ...} is any contour of the scene format: given as the circle of the roller, the line of
+// the flat face and the circle on the oscillating arm, it gives the dedicated kinds' profiles (the same sampling,
+// points to 1e-12), so the general path is checked against the two closed-form-tested ones.
+BOOST_AUTO_TEST_CASE(any_contour_agrees_with_the_roller_and_the_flat_face) {
+  const std::string head = R"({"units": {"length": "mm", "angle": "deg"}, "base_radius": 40, )";
+  const std::string translating = R"("follower": {"motion": "translating"}, )";
+  const std::string oscillating = R"("follower": {"motion": "oscillating", "pivot": [80, 50], "arm": 80, "start_angle": 180}, )";
+  struct Case {
+    std::string follower, dedicated, contour;
+  };
+  const Case cases[] = {
+      {translating, R"("contact": {"roller_radius": 10}, )", R"("contact": {"contour": {"type": "circle", "radius": 10, "at": {"y": 10}}}, )"},
+      {translating, R"("contact": {"flat": true}, )", R"("contact": {"contour": {"type": "line", "from": -40, "to": 40}}, )"},
+      {oscillating, R"("contact": {"roller_radius": 10}, )", R"("contact": {"contour": {"type": "circle", "radius": 10, "at": {"x": 80}}}, )"}};
+  for (const Case& c : cases) {
+    const CamProfile a = synthesise_cam(spec_from_text(head + c.follower + c.dedicated + kLaw + "}"));
+    const CamSpec spec = spec_from_text(head + c.follower + c.contour + kLaw + "}");
+    BOOST_TEST((spec.contact == FollowerContact::Contour));
+    const CamProfile b = synthesise_cam(spec);
+    BOOST_TEST_INFO(c.contour);
+    BOOST_TEST(largest_difference(a, b) < 1e-12 * 60);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_mushroom_follower_by_round_trip) {
+  // A convex circular face (radius 60, an arc of 60 degrees) on a translating follower: no closed form, the
+  // analysis of the written scene is the proof.
+  const CamSpec spec = spec_from_text(
+      R"({"units": {"length": "mm", "angle": "deg"}, "base_radius": 40, "follower": {"motion": "translating"},
+          "contact": {"contour": {"type": "circle", "radius": 60, "arc": [240, 300], "at": {"y": 60}}},
+          "law": [{"to": 100, "lift": 12, "kind": "poly345"}, {"to": 160, "kind": "dwell"},
+                  {"to": 260, "lift": -12, "kind": "poly345"}, {"to": 360, "kind": "dwell"}]})");
+  const CamProfile profile = synthesise_cam(spec);
+  BOOST_TEST(profile.envelope.defects.empty());
+  const CamRoundTrip rt = round_trip(spec, profile, "mushroom");
+  BOOST_TEST(rt.solved == rt.poses);
+  BOOST_TEST(rt.worst_deviation <= 1e-9 * 12);
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_follower_contour_is_reported_at_its_path) {
+  try {
+    spec_from_text(std::string(R"({"base_radius": 40, "follower": {"motion": "translating"},
+                                   "contact": {"contour": {"type": "circel", "radius": 10}}, )") + kLaw + "}");
+    BOOST_FAIL("no error");
+  } catch (const InputError& e) {
+    BOOST_TEST(e.location() == "contact.contour.type");
+  }
 }

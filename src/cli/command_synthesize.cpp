@@ -113,6 +113,18 @@ std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<
   return out;
 }
 
+/// A follower given as any contour, at the law's start in the world: 400 points of its domain placed in the
+/// follower's frame (translating: the world's axes at the follower's origin; oscillating: the arm's at the pivot).
+std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
+  std::vector<Vec2<double>> out;
+  if (spec.contact != synthesis::FollowerContact::Contour) return out;
+  const Contour<double>& c = spec.follower_shape->mechanism.contours[0];
+  const SE2<double> place(spec.motion == synthesis::FollowerMotion::Oscillating ? spec.start_angle : 0.0, profile.follower_origin);
+  const int n = 400;
+  for (int i = 0; i <= n; ++i) out.push_back(place.act(c.jet(c.domain().lo + (c.domain().hi - c.domain().lo) * i / n, 0).p));
+  return out;
+}
+
 /// The cam (filled profile) and the follower at the law's start, y up, the cam centre marked.
 std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
   double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
@@ -124,8 +136,10 @@ std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProf
   };
   for (const auto& p : profile.points) grow(p, 0);
   const Vec2<double> f = profile.follower_origin;
+  const std::vector<Vec2<double>> shape = follower_contour_points(spec, profile);
   if (spec.contact == synthesis::FollowerContact::Roller) grow(f, spec.roller_radius);
-  else grow(f, profile.face_half_length);
+  else if (spec.contact == synthesis::FollowerContact::Flat) grow(f, profile.face_half_length);
+  for (const auto& p : shape) grow(p, 0);
   if (spec.motion == synthesis::FollowerMotion::Oscillating) grow(spec.pivot, 0);
   const double margin = 0.05 * std::max(hi_x - lo_x, hi_y - lo_y);
   std::ostringstream s;
@@ -135,12 +149,16 @@ std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProf
     << "stroke=\"black\" stroke-width=\"" << margin / 10 << "\">\n<path id=\"cam\" fill=\"#dde\" d=\"M";
   for (const auto& p : profile.points) s << " " << p.x() << " " << p.y();
   s << " Z\"/>\n";
-  if (spec.contact == synthesis::FollowerContact::Roller)
+  if (spec.contact == synthesis::FollowerContact::Contour) {
+    s << "<path id=\"follower\" d=\"M";
+    for (const auto& p : shape) s << " " << p.x() << " " << p.y();
+    s << "\"/>\n";
+  } else if (spec.contact == synthesis::FollowerContact::Roller)
     s << "<circle id=\"roller\" cx=\"" << f.x() << "\" cy=\"" << f.y() << "\" r=\"" << spec.roller_radius << "\"/>\n";
   else
     s << "<line id=\"face\" x1=\"" << f.x() - profile.face_half_length << "\" y1=\"" << f.y() << "\" x2=\""
       << f.x() + profile.face_half_length << "\" y2=\"" << f.y() << "\"/>\n";
-  if (spec.motion == synthesis::FollowerMotion::Oscillating)
+  if (spec.motion == synthesis::FollowerMotion::Oscillating && spec.contact != synthesis::FollowerContact::Contour)
     s << "<line id=\"arm\" x1=\"" << spec.pivot.x() << "\" y1=\"" << spec.pivot.y() << "\" x2=\"" << f.x() << "\" y2=\""
       << f.y() << "\"/>\n";
   s << "<circle id=\"cam_centre\" cx=\"0\" cy=\"0\" r=\"" << margin / 5 << "\"/>\n</g>\n</svg>\n";

@@ -35,7 +35,7 @@ FollowerPlace follower_place(const CamSpec& spec, double theta) {
   }
   const double y0 = spec.contact == FollowerContact::Roller
                         ? std::sqrt(std::pow(spec.base_radius + spec.roller_radius, 2) - spec.offset * spec.offset)
-                        : spec.base_radius;
+                        : spec.base_radius;  // a flat face or a contour: the follower's frame at (e, Rb)
   return {V(spec.offset, y0 + l.s), V(0, l.v), V(0, l.a)};
 }
 
@@ -46,20 +46,63 @@ double signed_area(const std::vector<V>& p) {
 }
 
 
+/// A follower given as any contour: its jets, its domain, and the contact at theta = 0 as the root of the meshing
+/// equation nearest the cam centre among 2000 points of the domain (a closed contour has two or more).
+void contour_follower(const CamSpec& spec, EnvelopeProblem<double>& pr) {
+  const auto shape = spec.follower_shape;
+  const Contour<double>& c = shape->mechanism.contours[0];
+  pr.contour = [shape, &c](const double& u) { return c.jet(u, 2); };
+  const Domain<double>& dom = c.domain();
+  pr.u_scale = dom.hi - dom.lo;
+  if (!dom.closed) {
+    pr.u_lo = dom.lo;
+    pr.u_hi = dom.hi;
+  }
+  pr.u_guess = (dom.lo + dom.hi) / 2;
+  const MotionJet<double> m0 = pr.motion(0.0);
+  const int n = 2000;
+  double best = std::numeric_limits<double>::infinity();
+  double prev_u = dom.lo, prev_f = meshing(pr, dom.lo, m0).f;
+  for (int i = 1; i <= n; ++i) {
+    const double u = dom.lo + (dom.hi - dom.lo) * i / n;
+    const Meshing<double> r = meshing(pr, u, m0);
+    if ((r.f < 0) != (prev_f < 0)) {
+      const double dist = meshing(pr, (prev_u + u) / 2, m0).point.norm();
+      if (dist < best) {
+        best = dist;
+        pr.u_guess = (prev_u + u) / 2;
+      }
+    }
+    prev_u = u;
+    prev_f = r.f;
+  }
+}
+
 }  // namespace
 
 EnvelopeProblem<double> cam_envelope_problem(const CamSpec& spec) {
   EnvelopeProblem<double> pr;
   const double rotation = spec.rotation;
-  pr.motion = [spec, rotation](const double& theta) {
-    const FollowerPlace f = follower_place(spec, theta);
-    return relative_to_turning_frame<double>(rotation * theta, rotation, 0, 0, 0, 0, f.v, f.dv, f.ddv);
-  };
+  if (spec.contact == FollowerContact::Contour && spec.motion == FollowerMotion::Oscillating) {
+    // The contour turns with the arm: its frame at the pivot, at the angle psi = a0 + s.
+    pr.motion = [spec, rotation](const double& theta) {
+      const LawValue<double> l = (*spec.law)(theta);
+      const V zero = V::Zero();
+      return relative_to_turning_frame<double>(rotation * theta, rotation, 0, spec.start_angle + l.s, l.v, l.a, spec.pivot, zero, zero);
+    };
+  } else {
+    pr.motion = [spec, rotation](const double& theta) {
+      const FollowerPlace f = follower_place(spec, theta);
+      return relative_to_turning_frame<double>(rotation * theta, rotation, 0, 0, 0, 0, f.v, f.dv, f.ddv);
+    };
+  }
   pr.t_begin = 0;
   pr.t_end = 2 * pi<double>();
   pr.periodic = true;
   const V start = follower_place(spec, 0).v;
-  if (spec.contact == FollowerContact::Roller) {
+  if (spec.contact == FollowerContact::Contour) {
+    contour_follower(spec, pr);
+  } else if (spec.contact == FollowerContact::Roller) {
     const double r = spec.roller_radius;
     pr.contour = [r](const double& u) {
       Jet<double> j;
@@ -95,7 +138,9 @@ CamProfile synthesise_cam(const CamSpec& spec) {
   std::vector<V> pts = out.envelope.points();
   if (signed_area(pts) < 0) std::reverse(pts.begin() + 1, pts.end());  // counter-clockwise, first point kept
   out.points = pts;
-  out.follower_origin = follower_place(spec, 0).v;
+  out.follower_origin = spec.contact == FollowerContact::Contour && spec.motion == FollowerMotion::Oscillating
+                            ? spec.pivot
+                            : follower_place(spec, 0).v;
   out.contact = out.envelope.samples.empty() ? out.follower_origin : out.envelope.samples.front().point;
   double reach = 0;
   for (const auto& s : out.envelope.samples) reach = std::max(reach, std::abs(s.u));
@@ -118,21 +163,29 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   json follower_contour = json::object();
   const V origin = profile.follower_origin, c = profile.contact;
   double follower_value = 0;  // the follower contour's parameter at the contact, theta = 0
-  double frame_angle = 0;     // the follower frame's world angle at theta = 0
-  if (spec.motion == FollowerMotion::Translating) frame_angle = pi<double>() / 2;
-  else frame_angle = spec.start_angle;
-  if (spec.contact == FollowerContact::Roller) {
+  // The follower's frame: the world's axes at its origin for a translating follower (the prismatic pair's frame
+  // on the follower is turned back by its 90 degrees), the arm's frame at the pivot for an oscillating one.
+  const double frame_angle = spec.motion == FollowerMotion::Translating ? 0.0 : spec.start_angle;
+  std::string follower_contour_name;
+  if (spec.contact == FollowerContact::Contour) {
+    follower_contour = spec.follower_contour;
+    follower_contour_name = follower_contour["name"].get<std::string>();
+    const Contour<double>& shape = spec.follower_shape->mechanism.contours[0];
+    const double u0 = profile.envelope.samples.empty() ? 0.0 : profile.envelope.samples.front().u;
+    follower_value = shape.parameter_kind() == ParamKind::Angle ? angle_out(u0) : u0;
+  } else if (spec.contact == FollowerContact::Roller) {
+    follower_contour_name = "roller";
     follower_contour = {{"name", "roller"}, {"type", "circle"}, {"radius", spec.roller_radius}};
     if (spec.motion == FollowerMotion::Oscillating) follower_contour["at"] = {{"x", spec.arm}};
     const V d = c - origin;
     follower_value = angle_out(std::atan2(d.y(), d.x()) - frame_angle);
   } else {
+    follower_contour_name = "face";
     follower_contour = {{"name", "face"},        {"type", "line"}, {"from", -profile.face_half_length},
-                        {"to", profile.face_half_length}, {"at", {{"angle", angle_out(pi<double>() / 2)}}},
+                        {"to", profile.face_half_length}, {"at", {{"angle", angle_out(pi<double>())}}},
                         {"material", "right"}};
     follower_value = -(c.x() - origin.x());  // the face's x axis is the world's -x
   }
-  const std::string follower_contour_name = spec.contact == FollowerContact::Roller ? "roller" : "face";
 
   json links = json::array();
   links.push_back({{"name", "frame"}, {"ground", true}});
@@ -145,8 +198,9 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   pairs.push_back({{"name", "cam"}, {"type", "revolute"}, {"links", {"frame", "cam"}}, {"variable", "theta"}, {"value", 0}});
   if (spec.motion == FollowerMotion::Translating) {
     const V at = spec.contact == FollowerContact::Roller ? origin : V(spec.offset, spec.base_radius);
+    const double quarter = angle_out(pi<double>() / 2);
     pairs.push_back({{"name", "follower"}, {"type", "prismatic"}, {"links", {"frame", "follower"}},
-                     {"at", json::array({{{"x", at.x()}, {"y", at.y()}, {"angle", angle_out(pi<double>() / 2)}}, json::object()})},
+                     {"at", json::array({{{"x", at.x()}, {"y", at.y()}, {"angle", quarter}}, {{"angle", quarter}}})},
                      {"variable", "s"}, {"value", 0}});
   } else {
     pairs.push_back({{"name", "follower"}, {"type", "revolute"}, {"links", {"frame", "follower"}},

@@ -3,6 +3,7 @@
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/point_file.hpp"
+#include "rollkin/io/scene.hpp"
 #include "rollkin/synthesis/cam.hpp"
 
 #include "../io/json_access.hpp"
@@ -76,12 +77,17 @@ class CamSpecReader {
   }
 
   void read_contact(CamSpec& spec) {
-    const json& c = js_.require(root_, "", "contact", "{\"roller_radius\": r} or {\"flat\": true}");
-    js_.object(c, "contact", {"roller_radius", "flat"});
+    const json& c = js_.require(root_, "", "contact", "{\"roller_radius\": r}, {\"flat\": true} or {\"contour\": {...}}");
+    js_.object(c, "contact", {"roller_radius", "flat", "contour"});
     const json* roller = io::JsonAccess::get(c, "roller_radius");
     const json* flat = io::JsonAccess::get(c, "flat");
-    if ((roller != nullptr) == (flat != nullptr))
-      js_.fail("contact", "give exactly one of \"roller_radius\" (a roller) and \"flat\": true (a flat face)");
+    const json* contour = io::JsonAccess::get(c, "contour");
+    if ((roller != nullptr) + (flat != nullptr) + (contour != nullptr) != 1)
+      js_.fail("contact", "give exactly one of \"roller_radius\" (a roller), \"flat\": true (a flat face) and \"contour\" (any contour)");
+    if (contour) {
+      read_follower_contour(spec, *contour);
+      return;
+    }
     if (roller) {
       spec.contact = FollowerContact::Roller;
       spec.roller_radius = positive(*roller, "contact.roller_radius", "the roller's radius");
@@ -89,6 +95,32 @@ class CamSpecReader {
       if (!js_.boolean(*flat, "contact.flat", "true")) js_.fail("contact.flat", "expected true (a flat face); for a roller give \"roller_radius\"");
       spec.contact = FollowerContact::Flat;
     }
+  }
+
+  /// A contour of the scene format (docs/scene_format.md) read as the one contour of a one-link scene in the spec's
+  /// units, files relative to the spec; its errors are reported at contact.contour.
+  void read_follower_contour(CamSpec& spec, const json& contour) {
+    if (!contour.is_object()) js_.fail("contact.contour", "expected a contour object such as {\"type\": \"circle\", \"radius\": 10}");
+    json dict = contour;
+    if (!dict.contains("name")) dict["name"] = "contour";
+    json units = json::object();
+    if (!spec.length_label.empty()) units["length"] = spec.length_label;
+    units["angle"] = spec.angle_unit == io::AngleUnit::Degree ? "deg" : "rad";
+    const json scene = {{"units", units},
+                        {"links", json::array({{{"name", "frame"}, {"ground", true}}, {{"name", "follower"}, {"contours", json::array({dict})}}})},
+                        {"pairs", json::array({{{"name", "p"}, {"type", "revolute"}, {"links", {"frame", "follower"}}}})},
+                        {"inputs", json::array({"p.angle"})}};
+    const std::string prefix = "links[1].contours[0]";
+    try {
+      spec.follower_shape = std::make_shared<const io::Scene>(io::build_scene(scene, js_.file(), dir_));
+    } catch (const InputError& e) {
+      std::string location = e.location();
+      if (location.compare(0, prefix.size(), prefix) == 0) location = "contact.contour" + location.substr(prefix.size());
+      throw InputError(e.file(), location, e.message());
+    }
+    for (const std::string& f : spec.follower_shape->files_read) spec.files_read.push_back(f);
+    spec.follower_contour = dict;
+    spec.contact = FollowerContact::Contour;
   }
 
   void read_follower(CamSpec& spec) {
@@ -112,9 +144,11 @@ class CamSpecReader {
       spec.arm = positive(js_.require(f, "follower", "arm", "the arm's length (> 0)"), "follower.arm", "the arm's length");
       if (const json* a0 = io::JsonAccess::get(f, "start_angle")) {
         spec.start_angle = angle(*a0, "follower.start_angle", "the arm's angle", spec);
-        check_oscillating_start(spec);
-      } else {
+        if (spec.contact == FollowerContact::Roller) check_oscillating_start(spec);
+      } else if (spec.contact == FollowerContact::Roller) {
         spec.start_angle = start_on_prime_circle(spec);
+      } else {
+        js_.fail("follower", "an oscillating follower with a \"contour\" needs \"start_angle\" (the arm's angle at the law's zero)");
       }
     } else {
       js_.fail("follower.motion", "unknown motion \"" + motion + "\"; expected \"translating\" or \"oscillating\"");

@@ -9,7 +9,8 @@
 #    (chord^2 / (8 radius): a spline through the points);
 #  - PREFIX.txt against the closed-form profile (tests/cli/synthesis_closed_form_cam.py); `synthesize envelope`
 #    of the roller under the written scene's sweep gives that profile back;
-#  - a clockwise cam, an oscillating roller follower (column follower.phi) and a flat face: exit 0;
+#  - a clockwise cam, an oscillating roller follower (column follower.phi), a flat face and a mushroom follower
+#    given as any contour: exit 0;
 #  - a law read from a table file: exit 0;
 #  - an undercut (a roller larger than the pitch curve's radius of curvature): exit 1, the cam angles on
 #    stderr, nothing written;
@@ -24,6 +25,7 @@ BIN=${1:?usage: synthesize_cam.sh ROLLKIN_BINARY [PYTHON]}
 PYTHON=${2:-/usr/bin/python3}
 case "$BIN" in /*) ;; *) BIN="$PWD/$BIN" ;; esac
 HERE=$(cd "$(dirname "$0")" && pwd)
+SRC_EXAMPLES="$HERE/../../examples/synthesis"
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/rollkin_synth.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
@@ -124,6 +126,9 @@ cat > flat.json <<EOF
 EOF
 "$BIN" synthesize cam flat.json --out flat_out > /dev/null 2>&1
 check "flat-faced follower: exit 0" $?
+"$BIN" synthesize cam "$SRC_EXAMPLES/cam_mushroom.json" --out mushroom > /dev/null 2>&1 && [ -s mushroom.json ] &&
+  grep -q '"arc"' mushroom.json && "$BIN" solve mushroom.json > /dev/null 2>&1
+check "any contour (examples/synthesis/cam_mushroom.json): exit 0, the contour in the scene, the scene solves" $?
 "$PYTHON" -c '
 import math
 with open("law.csv", "w") as f:

@@ -9,6 +9,8 @@
 //    face is the line y = Rb + s(theta) (perpendicular to the guide; e does not change the profile).
 //  - Oscillating follower: turns about the pivot P by psi = a0 + s(theta) (s an angle); the roller's centre is
 //    at P + L (cos psi, sin psi). Rb is the base circle: |P + L (cos a0, sin a0)| = Rb + r is required.
+//  - Any contour ("contact": {"contour": {...}}): given in the follower's frame, (e, Rb) with the world's axes
+//    for a translating follower, the pivot with x along the arm (psi) for an oscillating one.
 // The envelope is computed in the cam's frame with the follower's contour in a world-aligned frame at the
 // roller's centre (or at the face's point above the guide).
 #pragma once
@@ -20,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +30,7 @@
 namespace rollkin::synthesis {
 
 enum class FollowerMotion { Translating, Oscillating };
-enum class FollowerContact { Roller, Flat };
+enum class FollowerContact { Roller, Flat, Contour };
 
 /// A cam spec (docs/synthesis.md, "The cam spec"), in internal units: lengths in the spec's length unit,
 /// angles in radians (an oscillating follower's law too).
@@ -45,6 +48,11 @@ struct CamSpec {
   double arm = 0, start_angle = 0;          // oscillating: L, a0 (radians)
   FollowerContact contact = FollowerContact::Roller;
   double roller_radius = 0;
+  // "contact": {"contour": {...}}: any contour of the scene format, in the follower's frame (translating: origin
+  // at (e, Rb) at the law's zero, axes along the world's; oscillating: origin at the pivot, x along the arm),
+  // read through a one-link scene (`follower_shape`, its contour 0) so that it is exactly the scene's contour.
+  std::shared_ptr<const io::Scene> follower_shape;
+  nlohmann::ordered_json follower_contour;
   std::optional<MotionLaw<double>> law;
   double tolerance = 0;                     // absolute, in the law's unit (length or radians)
   double stroke = 0;                        // of the law
