@@ -139,7 +139,7 @@ class CamSpecReader {
       js_.object(f, "follower", {"motion", "pivot", "arm", "start_angle"});
       spec.motion = FollowerMotion::Oscillating;
       if (spec.contact == FollowerContact::Flat)
-        js_.fail("contact.flat", "a flat-faced oscillating follower is not supported; give \"roller_radius\"");
+        js_.fail("contact.flat", "a flat face is a kind for translating followers; on an oscillating arm give it as a contour, e.g. \"contour\": {\"type\": \"line\", \"from\": 0, \"to\": 100, \"at\": {...}}");
       spec.pivot = js_.point(js_.require(f, "follower", "pivot", "the pivot [x, y]"), "follower.pivot");
       spec.arm = positive(js_.require(f, "follower", "arm", "the arm's length (> 0)"), "follower.arm", "the arm's length");
       if (const json* a0 = io::JsonAccess::get(f, "start_angle")) {
