@@ -3,6 +3,7 @@
 // design study can vary a motion law and read the pressure angles.
 #include "bindings.hpp"
 
+#include "rollkin/io/dxf_writer.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -33,6 +34,19 @@ json points_json(const std::vector<V>& pts) {
   json list = json::array();
   for (const V& p : pts) list.push_back({p.x(), p.y()});
   return list;
+}
+
+/// The spline a `samples` contour fits through `pts` as the exact `nurbs` contour dict (docs/scene_format.md): the
+/// DXF writer's B-spline form of it (io::spline_of: degree 3, the chord-length knots, clamped; closed with equal
+/// first and last control points), parameterised by arc length.
+json nurbs_json(const std::vector<V>& pts, bool closed, const std::string& name) {
+  SplineOptions<double> o;
+  o.closed = closed;
+  const rollkin::io::DxfSpline s = rollkin::io::spline_of(SampledProfile<double>(pts, o), "");
+  // Parameterised by arc length: with the native parameter (piece i on [i, i + 1]) the sweep of a synthesised cam
+  // as a NURBS of ~1400 pieces stopped without convergence part way round (docs/synthesis.md, "Python").
+  return {{"name", name}, {"type", "nurbs"}, {"degree", s.degree}, {"knots", s.knots}, {"points", points_json(s.control)},
+          {"closed", s.closed}, {"parameter", "arc_length"}};
 }
 
 /// A spec argument: a dict (read as a spec document named `<dict>`, files relative to base_dir or the working
@@ -77,6 +91,7 @@ py::dict synthesize_cam(const py::object& spec_arg, const py::object& base_dir) 
     out["round_trip"] = py::none();
     return out;
   }
+  out["nurbs"] = to_python(nurbs_json(profile.points, true, "profile"));
   json scene_doc = synthesis::cam_scene(spec, profile, "profile.txt");
   scene_doc["links"][1]["contours"][0] = contour;
   const PyScene scene = scene_of(scene_doc, "<synthesized cam>", dir);
@@ -169,6 +184,7 @@ py::dict envelope(const PyScene& s, const std::string& link_a, const std::string
   for (const auto& d : env.defects) defects.append(py::make_tuple(d.t / scene.sweep->unit, d.what));
   out["defects"] = defects;
   out["contour"] = to_python(json{{"name", "envelope"}, {"type", "samples"}, {"points", points_json(pts)}, {"closed", env.closed}});
+  out["nurbs"] = env.defects.empty() && pts.size() >= 4 ? to_python(nurbs_json(pts, env.closed, "envelope")) : py::none();
   return out;
 }
 
@@ -178,7 +194,7 @@ void bind_synthesis(py::module_& m) {
   m.def("synthesize_cam", &synthesize_cam, py::arg("spec"), py::kw_only(), py::arg("base_dir") = py::none(),
         "The disk cam of a cam spec (a dict or a spec file; docs/synthesis.md), analysed by the scene made from it.\n"
         "Returns a dict: profile ((n, 2) array, counter-clockwise, the cam's frame), contour (the samples dict a\n"
-        "scene takes), folds (cam angle, what: an undercut; then scene and round_trip are None), jumps (the law's\n"
+        "scene takes), nurbs (the same curve as an exact nurbs dict; not when undercut), folds (cam angle, what: an undercut; then scene and round_trip are None), jumps (the law's\n"
         "discontinuities), scene (a Scene with the profile inline) and round_trip (worst_deviation, tolerance, ok,\n"
         "max_pressure_angle_deg, min_radius_of_curvature, and per pose cam_angle, pressure_angle_deg, analysed,\n"
         "prescribed).\n"
@@ -191,7 +207,8 @@ void bind_synthesis(py::module_& m) {
   m.def("envelope", &envelope, py::arg("scene"), py::arg("link_a"), py::arg("link_b"), py::arg("contour"), py::kw_only(),
         py::arg("start") = py::none(), py::arg("tolerance") = py::none(),
         "The envelope on link_a of link_b's contour (\"B.name\") under the scene's sweep (docs/synthesis.md).\n"
-        "Returns a dict: points ((n, 2) array in link_a's frame), closed, contour (a samples dict),\n"
+        "Returns a dict: points ((n, 2) array in link_a's frame), closed, contour (a samples dict), nurbs (the same\n"
+        "curve as an exact nurbs dict, None where the envelope folds),\n"
         "max_midpoint_deviation, defects (input value, what: folds or gaps).");
 }
 

@@ -108,3 +108,18 @@ def test_envelope_of_the_roller_gives_the_cam_back(tmp_path):
     cli = np.loadtxt(str(out) + ".txt")
     assert cli.shape == env["points"].shape
     assert np.max(np.abs(cli - env["points"])) < 1e-12
+
+
+def test_nurbs_output_is_the_same_cam():
+    """The profile as an exact nurbs dict in place of the samples one: the analysed follower still follows the law."""
+    r = rollkin.synthesize_cam(json.loads(CAM.read_text()))
+    n = r["nurbs"]
+    assert n["type"] == "nurbs" and n["degree"] == 3 and n["closed"] is True and n["parameter"] == "arc_length"
+    assert len(n["knots"]) == len(n["points"]) + 4
+    doc = r["scene"].document()
+    doc["links"][1]["contours"][0] = n
+    t = rollkin.scene(doc).solve(0, 360, 0.7)
+    s = np.array([cycloidal(x)[0] for x in t["cam.theta"]])
+    assert np.max(np.abs(t["follower.s"] - s)) <= 1e-9 * 15
+    env = rollkin.envelope(r["scene"], "cam", "follower", "follower.roller", tolerance=1e-7)
+    assert env["nurbs"]["type"] == "nurbs" and env["nurbs"]["closed"] is True
