@@ -100,4 +100,7 @@ void bind_scenes(py::module_& m, py::class_<PyScene>& scene);
 /// Solving: Scene.solve, write, centrodes, reference and the functions solve_many, _sweep_seconds.
 void bind_solving(py::module_& m, py::class_<PyScene>& scene);
 
+/// Synthesis (python/synthesis_bindings.cpp): synthesize_cam, synthesize_gears, envelope.
+void bind_synthesis(py::module_& m);
+
 }  // namespace rollkin::python

@@ -67,5 +67,6 @@ PYBIND11_MODULE(rollkin, m) {
                             "Scenes pickle (as their JSON document), so they can be sent to other processes (dask workers).");
   rollkin::python::bind_scenes(m, scene);
   rollkin::python::bind_solving(m, scene);
+  rollkin::python::bind_synthesis(m);
   m.attr("__version__") = ROLLKIN_VERSION;
 }

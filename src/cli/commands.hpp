@@ -58,6 +58,7 @@ Command reference_command(CLI::App& rollkin);
 Command centrodes_command(CLI::App& rollkin);
 Command check_command(CLI::App& rollkin);
 Command contours_command(CLI::App& rollkin);
+Command synthesize_command(CLI::App& rollkin);
 
 // ---- option values: fully parsed, checked before anything is read ------------------------------------------
 

@@ -6,6 +6,7 @@
 //   rollkin centrodes SCENE --links A B [--from V --to V --step V] [--max-steps N] --out PREFIX
 //   rollkin check SCENE [--from V --to V --step V] [--max-steps N]
 //   rollkin contours FILE.dxf|FILE.svg [--draw OUT.svg] [--json]
+//   rollkin synthesize cam SPEC.json --out PREFIX
 //   rollkin --help | --version;  rollkin COMMAND --help
 //
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
@@ -42,7 +43,34 @@ namespace {
 
 /// CLI11's "The following argument was not expected: X" in rollkin's words: what X was taken for and what
 /// was expected. The arguments are named in command-line order.
+/// The deepest subcommand given ("cam" of "rollkin synthesize cam"), or `command` itself.
+const CLI::App* innermost(const CLI::App* command) {
+  while (command) {
+    const std::vector<const CLI::App*> given = command->get_subcommands([](const CLI::App* sub) { return sub->parsed(); });
+    if (given.empty()) break;
+    command = given.front();
+  }
+  return command;
+}
+
+/// "synthesize cam": the names from the command below `rollkin` down to `command`.
+std::string command_path(const CLI::App* command) {
+  std::string path;
+  for (const CLI::App* c = command; c && c->get_parent(); c = c->get_parent())
+    path = c->get_name() + (path.empty() ? "" : " " + path);
+  return path;
+}
+
+/// The names of a command's own subcommands ("cam, gears, envelope"), empty when it has none.
+std::string subcommand_names(const CLI::App* command) {
+  std::string names;
+  for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  return names;
+}
+
 std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command, int argc, char** argv) {
+  command = innermost(command);
   const std::vector<std::string> extras = rollkin.remaining(true);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -52,9 +80,12 @@ std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command
       std::string names;
       for (const CLI::Option* opt : command->get_options())
         if (!opt->get_positional() && opt != command->get_help_ptr()) names += (names.empty() ? "" : ", ") + opt->get_name();
-      return "unknown option \"" + a + "\" for " + command->get_name() + "; expected one of " + names;
+      return "unknown option \"" + a + "\" for " + command_path(command) + "; expected one of " + names;
     }
     if (!command) return "unknown command \"" + a + "\"";
+    const std::string subcommands = subcommand_names(command);
+    if (!subcommands.empty())
+      return "unknown " + command_path(command) + " command \"" + a + "\"; expected one of " + subcommands;
     return "unexpected argument \"" + a + "\": " + command->get_name() + " takes one SCENE file";
   }
   return {};
@@ -64,7 +95,7 @@ std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command
 int usage_error(const std::string& what, const CLI::App* command, const std::vector<Command>& commands) {
   std::cerr << "rollkin: " << what << "\n";
   if (command) {
-    std::cerr << "(rollkin " << command->get_name() << " --help lists its options)\n";
+    std::cerr << "(rollkin " << command_path(innermost(command)) << " --help lists its options)\n";
   } else {
     std::string names;
     for (const Command& c : commands) names += (names.empty() ? "" : ", ") + c.app->get_name();
@@ -84,7 +115,8 @@ int main(int argc, char** argv) {
   rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'.\n" +
                  std::string(kExitStatus));
   const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin), centrodes_command(rollkin),
-                                      check_command(rollkin), contours_command(rollkin)};
+                                      check_command(rollkin), contours_command(rollkin),
+                                      synthesize_command(rollkin)};
   const CLI::App* chosen = nullptr;
   try {
     try {

@@ -1,0 +1,340 @@
+// `rollkin synthesize cam SPEC.json --out PREFIX`: the disk cam that gives a follower a motion law, written as
+// a point file, a DXF SPLINE, an SVG drawing and the scene that analyses it, then proved by that analysis
+// (docs/synthesis.md).
+#include "commands.hpp"
+
+#include "rollkin/io/csv.hpp"
+#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/synthesis/cam.hpp"
+#include "rollkin/synthesis/gears.hpp"
+#include "rollkin/synthesis/scene_envelope.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace rollkin::cli {
+namespace {
+
+struct SynthesizeCamOptions {
+  std::string spec;
+  std::string out;  // PREFIX of PREFIX.txt, .dxf, .svg, .json
+};
+
+int run_synthesize_cam(const SynthesizeCamOptions& o);
+int run_synthesize_gears(const SynthesizeCamOptions& o);
+
+struct SynthesizeEnvelopeOptions {
+  SweepRequest sweep;
+  std::vector<std::string> links;  // A B
+  std::string contour;             // B.name
+  std::string out;
+  std::optional<double> tolerance, start;
+  std::string tolerance_text, start_text;
+};
+int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o);
+
+}  // namespace
+
+Command synthesize_command(CLI::App& rollkin) {
+  auto o = std::make_shared<SynthesizeCamOptions>();
+  CLI::App* app = rollkin.add_subcommand("synthesize", "the contour that gives a prescribed motion (cams), proved by analysing it");
+  app->require_subcommand(0, 1);  // none: a UsageError naming the three (run below)
+  CLI::App* cam = app->add_subcommand("cam", "a disk cam from a motion law and a follower (docs/synthesis.md)");
+  cam->add_option("SPEC", o->spec, "the cam spec (JSON: base_radius, rotation, follower, contact, law, tolerance)")
+      ->required()
+      ->type_name("SPEC.json");
+  add_output(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
+      ->required()
+      ->type_name("PREFIX");
+  cam->footer(
+      "Computes the cam profile as the envelope of the follower's contour (roller or flat face) under its motion\n"
+      "relative to the turning cam, sampled so that the fitted spline is within a sixteenth of the tolerance of\n"
+      "the true profile. Writes PREFIX.txt (closed point file, the cam's frame), PREFIX.dxf (one SPLINE),\n"
+      "PREFIX.svg (cam and follower at the law's start) and PREFIX.json (the scene: revolute 'cam' theta,\n"
+      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing. Then it reads PREFIX.json, solves\n"
+      "one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
+      "pressure angle and the smallest radius of curvature of the profile at the contacts.\n"
+      "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
+      "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
+      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory.");
+  auto g = std::make_shared<SynthesizeCamOptions>();
+  CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
+  gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
+  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf and PREFIX.json (scene)")
+      ->required()
+      ->type_name("PREFIX");
+  gears->footer(
+      "Samples both pitch curves (r1 = E f'/(1 + f'), r2 = E/(1 + f')) until their fitted splines are within a\n"
+      "sixteenth of the tolerance (times E) of the true curves at every mid-angle, reports whether the pair closes\n"
+      "(f(phi + 360) = f(phi) + 360) and the smallest curvature of each curve (convex or not), writes the curves,\n"
+      "their DXF and the scene rolling them (revolutes gear1, gear2, rolling pair mesh), all or nothing, then\n"
+      "solves that scene over one turn and prints the worst deviation of gear2.phi from -f(gear1.phi).\n"
+      "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
+      "written); 2 bad input; 3 out of memory.");
+  auto e = std::make_shared<SynthesizeEnvelopeOptions>();
+  CLI::App* env = app->add_subcommand("envelope", "the conjugate on link A of a contour of link B under the scene's sweep");
+  add_sweep_options(*env, e->sweep);
+  env->add_option("--links", e->links, "the links A (carries the envelope) and B (carries the contour)")->expected(2)->required()->type_name("A B");
+  env->add_option("--contour", e->contour, "B's contour, as the scene's pairs name it (B.name)")->required()->type_name("B.NAME");
+  add_output(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
+  add_number(*env, "--tolerance", e->tolerance, e->tolerance_text,
+             "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
+  add_number(*env, "--start", e->start, e->start_text,
+             "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
+  env->footer(
+      "Solves the sweep, interpolates B's pose relative to A (cubic Hermite in the input, from poses and rates)\n"
+      "and computes the envelope of B's contour from the equation of meshing n . v_rel = 0, sampled until the\n"
+      "spline through the points is within the tolerance at every mid-pose (docs/synthesis.md). Writes PREFIX.txt\n"
+      "(a point file, closed when the relative motion is periodic) and PREFIX.dxf (one SPLINE), all or nothing.\n"
+      "Exit status: 0 written; 1 the envelope folds (undercut, cusp) or does not exist somewhere (the inputs on\n"
+      "stderr; the points found are still written, the DXF not); 2 bad input; 3 out of memory.");
+  return {app, [o, cam, g, gears, e, env] {
+            if (cam->parsed()) return run_synthesize_cam(*o);
+            if (gears->parsed()) return run_synthesize_gears(*g);
+            if (env->parsed()) return run_synthesize_envelope(*e);
+            throw UsageError("synthesize: expected what to synthesize: cam, gears or envelope");
+          }};
+}
+
+namespace {
+
+std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
+  std::string out = "# cam profile written by rollkin synthesize cam from " + spec.file +
+                    "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
+                    (spec.length_label.empty() ? std::string("as the spec") : spec.length_label) + "\n";
+  for (const auto& p : points) {
+    io::append_double(out, p.x());
+    out += ' ';
+    io::append_double(out, p.y());
+    out += '\n';
+  }
+  return out;
+}
+
+/// A follower given as any contour, at the law's start in the world: 400 points of its domain placed in the
+/// follower's frame (translating: the world's axes at the follower's origin; oscillating: the arm's at the pivot).
+std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
+  std::vector<Vec2<double>> out;
+  if (spec.contact != synthesis::FollowerContact::Contour) return out;
+  const Contour<double>& c = spec.follower_shape->mechanism.contours[0];
+  const SE2<double> place(spec.motion == synthesis::FollowerMotion::Oscillating ? spec.start_angle : 0.0, profile.follower_origin);
+  const int n = 400;
+  for (int i = 0; i <= n; ++i) out.push_back(place.act(c.jet(c.domain().lo + (c.domain().hi - c.domain().lo) * i / n, 0).p));
+  return out;
+}
+
+/// The cam (filled profile) and the follower at the law's start, y up, the cam centre marked.
+std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
+  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
+  auto grow = [&](const Vec2<double>& p, double r) {
+    lo_x = std::min(lo_x, p.x() - r);
+    hi_x = std::max(hi_x, p.x() + r);
+    lo_y = std::min(lo_y, p.y() - r);
+    hi_y = std::max(hi_y, p.y() + r);
+  };
+  for (const auto& p : profile.points) grow(p, 0);
+  const Vec2<double> f = profile.follower_origin;
+  const std::vector<Vec2<double>> shape = follower_contour_points(spec, profile);
+  if (spec.contact == synthesis::FollowerContact::Roller) grow(f, spec.roller_radius);
+  else if (spec.contact == synthesis::FollowerContact::Flat) grow(f, profile.face_half_length);
+  for (const auto& p : shape) grow(p, 0);
+  if (spec.motion == synthesis::FollowerMotion::Oscillating) grow(spec.pivot, 0);
+  const double margin = 0.05 * std::max(hi_x - lo_x, hi_y - lo_y);
+  std::ostringstream s;
+  s.precision(10);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << lo_x - margin << " " << -hi_y - margin << " "
+    << hi_x - lo_x + 2 * margin << " " << hi_y - lo_y + 2 * margin << "\">\n<g transform=\"scale(1,-1)\" fill=\"none\" "
+    << "stroke=\"black\" stroke-width=\"" << margin / 10 << "\">\n<path id=\"cam\" fill=\"#dde\" d=\"M";
+  for (const auto& p : profile.points) s << " " << p.x() << " " << p.y();
+  s << " Z\"/>\n";
+  if (spec.contact == synthesis::FollowerContact::Contour) {
+    s << "<path id=\"follower\" d=\"M";
+    for (const auto& p : shape) s << " " << p.x() << " " << p.y();
+    s << "\"/>\n";
+  } else if (spec.contact == synthesis::FollowerContact::Roller)
+    s << "<circle id=\"roller\" cx=\"" << f.x() << "\" cy=\"" << f.y() << "\" r=\"" << spec.roller_radius << "\"/>\n";
+  else
+    s << "<line id=\"face\" x1=\"" << f.x() - profile.face_half_length << "\" y1=\"" << f.y() << "\" x2=\""
+      << f.x() + profile.face_half_length << "\" y2=\"" << f.y() << "\"/>\n";
+  if (spec.motion == synthesis::FollowerMotion::Oscillating && spec.contact != synthesis::FollowerContact::Contour)
+    s << "<line id=\"arm\" x1=\"" << spec.pivot.x() << "\" y1=\"" << spec.pivot.y() << "\" x2=\"" << f.x() << "\" y2=\""
+      << f.y() << "\"/>\n";
+  s << "<circle id=\"cam_centre\" cx=\"0\" cy=\"0\" r=\"" << margin / 5 << "\"/>\n</g>\n</svg>\n";
+  return s.str();
+}
+
+/// The law's unit for messages: the length unit, or the angle unit of an oscillating follower.
+std::string law_value(const synthesis::CamSpec& spec, double v) {
+  if (spec.motion == synthesis::FollowerMotion::Oscillating)
+    return fmt(io::from_radians(v, spec.angle_unit), 6) + " " + io::unit_label(spec.angle_unit);
+  return fmt(v, 6) + (spec.length_label.empty() ? "" : " " + spec.length_label);
+}
+
+std::string angle_value(const synthesis::CamSpec& spec, double rad) {
+  return fmt(io::from_radians(rad, spec.angle_unit), 10) + " " + io::unit_label(spec.angle_unit);
+}
+
+int run_synthesize_cam(const SynthesizeCamOptions& o) {
+  g_doing = "reading the cam spec";
+  const synthesis::CamSpec spec = synthesis::read_cam_spec(o.spec);
+  io::OutputSet outputs(spec.files_read);
+  const std::string txt = o.out + ".txt", dxf = o.out + ".dxf", svg = o.out + ".svg", scene_file = o.out + ".json";
+  const std::size_t i_txt = outputs.add("--out (profile)", txt), i_dxf = outputs.add("--out (DXF)", dxf),
+                    i_svg = outputs.add("--out (SVG)", svg), i_scene = outputs.add("--out (scene)", scene_file);
+
+  for (const auto& j : spec.law->check_continuity()) {
+    const char* what[] = {"the displacement jumps (no motion can follow it)", "the velocity jumps (infinite acceleration)",
+                          "the acceleration jumps (infinite jerk)"};
+    std::cerr << o.spec << ": law: at cam angle " << angle_value(spec, j.theta) << " " << what[j.order] << ": from "
+              << fmt(j.left) << " to " << fmt(j.right) << "\n";
+  }
+
+  g_doing = "computing the cam profile";
+  const synthesis::CamProfile profile = synthesis::synthesise_cam(spec);
+  if (!profile.envelope.defects.empty()) {
+    for (const auto& d : profile.envelope.defects)
+      std::cerr << o.spec << ": undercut: at cam angle " << angle_value(spec, d.t) << " " << d.what
+                << (std::isfinite(d.point.x()) ? " (profile point " + fmt(d.point.x(), 10) + ", " + fmt(d.point.y(), 10) + ")" : "")
+                << "\n";
+    std::cerr << o.spec << ": the profile is undercut (a smaller roller or a larger base circle avoids it); nothing written\n";
+    return 1;
+  }
+
+  g_doing = "building the output files";
+  const std::string profile_name = std::filesystem::path(txt).filename().string();
+  outputs.set(i_txt, profile_text(spec, profile.points));
+  SampledProfile<double> spline(profile.points, SplineOptions<double>{true});
+  outputs.set(i_dxf, io::dxf_text({io::spline_of(spline, "CAM")}, spec.length_label));
+  outputs.set(i_svg, drawing_svg(spec, profile));
+  outputs.set(i_scene, synthesis::cam_scene(spec, profile, profile_name).dump(2) + "\n");
+  g_doing = "writing the output files";
+  outputs.commit();
+
+  g_doing = "analysing the cam (round trip)";
+  const synthesis::CamRoundTrip rt = synthesis::cam_round_trip(spec, scene_file);
+  std::cout << o.spec << ": profile of " << profile.points.size() << " points (spline within "
+            << fmt(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
+            << dxf << ", " << svg << ", " << scene_file << "\n";
+  std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n";
+  std::cout << "  worst deviation of the follower from the law: " << law_value(spec, rt.worst_deviation) << " at cam angle "
+            << angle_value(spec, rt.worst_deviation_at) << " (tolerance " << law_value(spec, spec.tolerance) << ")\n";
+  std::cout << "  largest pressure angle: " << fmt(rt.max_pressure_angle * 180 / pi<double>(), 10) << " deg at cam angle "
+            << angle_value(spec, rt.max_pressure_angle_at) << "\n";
+  std::cout << "  smallest radius of curvature of the profile: " << fmt(rt.min_radius_of_curvature, 10)
+            << (rt.min_radius_of_curvature < 0 ? " (concave)" : "") << " at cam angle " << angle_value(spec, rt.min_radius_at) << "\n";
+  for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
+  const bool ok = rt.problems.empty() && rt.solved == rt.poses && rt.worst_deviation <= spec.tolerance;
+  if (!ok && rt.worst_deviation > spec.tolerance)
+    std::cerr << o.spec << ": the analysed motion deviates from the law by more than the tolerance\n";
+  return ok ? 0 : 1;
+}
+
+std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
+  std::string out = "# " + what + "\n";
+  for (const auto& p : points) {
+    io::append_double(out, p.x());
+    out += ' ';
+    io::append_double(out, p.y());
+    out += '\n';
+  }
+  return out;
+}
+
+int run_synthesize_gears(const SynthesizeCamOptions& o) {
+  g_doing = "reading the gear spec";
+  const synthesis::GearSpec spec = synthesis::read_gear_spec(o.spec);
+  io::OutputSet outputs(spec.files_read);
+  const std::string f1 = o.out + ".1.txt", f2 = o.out + ".2.txt", dxf = o.out + ".dxf", scene_file = o.out + ".json";
+  const std::size_t i1 = outputs.add("--out (gear 1)", f1), i2 = outputs.add("--out (gear 2)", f2),
+                    i_dxf = outputs.add("--out (DXF)", dxf), i_scene = outputs.add("--out (scene)", scene_file);
+  const std::string deg = io::unit_label(spec.angle_unit);
+  if (std::abs(spec.closure_error) > spec.tolerance) {
+    std::cerr << o.spec << ": the pair does not close: f(phi + " << fmt(io::from_radians(2 * pi<double>(), spec.angle_unit))
+              << ") - f(phi) = " << fmt(io::from_radians(2 * pi<double>() + spec.closure_error, spec.angle_unit), 12) << " " << deg
+              << ", not one turn (gear 2 would not come back to its start after a turn of gear 1); nothing written\n";
+    return 1;
+  }
+  g_doing = "computing the pitch curves";
+  const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
+  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
+  outputs.set(i1, points_text(what + "gear 1 (pivot at the origin)", d.pair.gear1));
+  outputs.set(i2, points_text(what + "gear 2 (pivot at the origin of its frame)", d.pair.gear2));
+  SplineOptions<double> closed;
+  closed.closed = true;
+  outputs.set(i_dxf, io::dxf_text({io::spline_of(SampledProfile<double>(d.pair.gear1, closed), "GEAR1"),
+                                   io::spline_of(SampledProfile<double>(d.pair.gear2, closed), "GEAR2")},
+                                  spec.length_label));
+  outputs.set(i_scene, synthesis::gear_scene(spec, d, std::filesystem::path(f1).filename().string(),
+                                             std::filesystem::path(f2).filename().string()).dump(2) + "\n");
+  g_doing = "writing the output files";
+  outputs.commit();
+  g_doing = "analysing the gears (round trip)";
+  const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
+  std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
+            << fmt(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
+            << scene_file << "\n";
+  for (int gear = 1; gear <= 2; ++gear) {
+    const double kappa = gear == 1 ? d.min_curvature1 : d.min_curvature2, at = gear == 1 ? d.min_curvature1_at : d.min_curvature2_at;
+    std::cout << "  gear " << gear << ": " << (kappa > 0 ? "convex" : "NOT convex (teeth cut on it would undercut)")
+              << ", smallest curvature " << fmt(kappa, 8) << " at polar angle " << fmt(io::from_radians(at, spec.angle_unit), 8)
+              << " " << deg << "\n";
+  }
+  std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n"
+            << "  worst deviation of gear2.phi from -f(gear1.phi): " << fmt(io::from_radians(rt.worst_deviation, spec.angle_unit)) << " "
+            << deg << " at gear1.phi = " << fmt(io::from_radians(rt.worst_deviation_at, spec.angle_unit), 10) << " " << deg
+            << " (tolerance " << fmt(io::from_radians(spec.tolerance, spec.angle_unit)) << " " << deg << ")\n";
+  for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
+  return rt.problems.empty() && rt.worst_deviation <= spec.tolerance ? 0 : 1;
+}
+
+int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
+  if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
+  const std::string txt = o.out + ".txt", dxf = o.out + ".dxf";
+  SweepRun run(o.sweep, {{"--out (points)", txt}, {"--out (DXF)", dxf}});
+  const io::Scene& scene = run.scene;
+  const Mechanism<double>& m = scene.mechanism;
+  const int a = m.find_link(o.links[0]), b = m.find_link(o.links[1]);
+  if (a < 0 || b < 0) throw UsageError("--links: no link \"" + (a < 0 ? o.links[0] : o.links[1]) + "\" in the scene");
+  const int contour = m.find_contour(o.contour);
+  if (contour < 0 || m.contours[contour].link() != b)
+    throw UsageError("--contour: no contour \"" + o.contour + "\" on link \"" + o.links[1] + "\" (give it as " + o.links[1] + ".NAME)");
+  if (o.tolerance && !(*o.tolerance > 0)) throw UsageError("--tolerance: expected a distance > 0, got " + o.tolerance_text);
+  SolveData<double> sd(m);
+  VectorX<double> q;
+  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "solving the sweep";
+  const SweepResult<double> result = sweep(m, sd, q, assembly, run.sweep.driver, run.inputs);
+  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, run.sweep, l) << "\n";
+  g_doing = "computing the envelope";
+  const synthesis::SweepMotion motion(m, result, a, b);
+  const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
+  const double tol = o.tolerance ? *o.tolerance : 1e-9 * m.length_scale;
+  const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  const std::vector<Vec2<double>> pts = env.points();
+  run.set_output("--out (points)", [&] {
+    return points_text("envelope of " + o.contour + " in the frame of link " + o.links[0] + ", written by rollkin synthesize envelope from " +
+                           scene.file + (env.closed ? " (closed)" : " (open)"),
+                       pts);
+  });
+  const bool drawable = env.defects.empty() && pts.size() >= 4;
+  if (drawable) {
+    SplineOptions<double> so;
+    so.closed = env.closed;
+    run.set_output("--out (DXF)", [&] { return io::dxf_text({io::spline_of(SampledProfile<double>(pts, so), "ENVELOPE")}, scene.length_unit); });
+  } else {
+    run.omit_output("--out (DXF)");
+  }
+  g_doing = "writing the output files";
+  run.outputs.commit();
+  std::cout << scene.file << ": envelope of " << o.contour << " relative to link " << o.links[0] << ": " << pts.size() << " points"
+            << (env.closed ? " (closed)" : " (open)") << ", spline within " << fmt(env.max_midpoint_deviation, 3)
+            << " at every mid-pose (tolerance " << fmt(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
+  for (const auto& d : env.defects)
+    std::cerr << scene.file << ": at " << input_text(scene, run.sweep, d.t) << ": " << d.what << "\n";
+  return env.defects.empty() && result.limits.empty() ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace rollkin::cli

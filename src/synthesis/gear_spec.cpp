@@ -1,0 +1,97 @@
+// Reading a gear spec (docs/synthesis.md, "The gear spec"): every problem an InputError naming the spec file and
+// the JSON path.
+#include "rollkin/io/input_file.hpp"
+#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/point_file.hpp"
+#include "rollkin/synthesis/gears.hpp"
+
+#include "../io/json_access.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace rollkin::synthesis {
+
+GearSpec read_gear_spec(const std::string& path) {
+  GearSpec spec = gear_spec_from_document(io::parse_json_document(io::read_input_file(path, "gear spec"), path), path,
+                                          std::filesystem::path(path).parent_path().string());
+  spec.files_read.insert(spec.files_read.begin(), path);
+  return spec;
+}
+
+GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::string& path, const std::string& dir) {
+  using io::json;
+  const io::JsonAccess js(path);
+  GearSpec spec;
+  spec.file = path;
+  js.object(root, "", {"description", "units", "centre_distance", "transmission", "tolerance"});
+  if (const json* u = io::JsonAccess::get(root, "units")) {
+    js.object(*u, "units", {"length", "angle"});
+    try {
+      if (const json* l = io::JsonAccess::get(*u, "length"))
+        spec.length = io::parse_length_unit(spec.length_label = js.string(*l, "units.length", "a length unit"));
+      if (const json* a = io::JsonAccess::get(*u, "angle"))
+        spec.angle_unit = io::parse_angle_unit(js.string(*a, "units.angle", "\"deg\" or \"rad\""));
+    } catch (const std::invalid_argument& e) {
+      js.fail("units", e.what());
+    }
+  }
+  spec.centre_distance = js.number(js.require(root, "", "centre_distance", "the distance of the pivots (> 0)"),
+                                   "centre_distance", "a length");
+  if (!(spec.centre_distance > 0)) js.fail("centre_distance", "expected a distance > 0, got " + io::fmt(spec.centre_distance));
+  const json& t = js.require(root, "", "transmission",
+                             "{\"kind\": \"elliptical\", \"eccentricity\": e}, {\"kind\": \"sinusoidal\", \"k\": k} or {\"file\": \"f.txt\"}");
+  if (io::JsonAccess::get(t, "file")) {
+    js.object(t, "transmission", {"file"});
+    spec.kind = "table";
+    const std::string name = js.string(t["file"], "transmission.file", "the table's file name");
+    const std::filesystem::path file = std::filesystem::path(dir) / name;
+    spec.files_read.push_back(file.string());
+    PointSamples rows;
+    try {
+      rows = read_point_samples(file.string(), 5);
+    } catch (const InputError& e) {  // the point file's words are about x y: say what the columns are here
+      throw InputError(e.file(), e.location(), e.message() + " (a transmission table is read as a point file: two columns, phi1 "
+                                                             "then phi2; no header line, or one naming x y)");
+    }
+    std::vector<double> p, g;
+    for (const auto& r : rows.points) {
+      p.push_back(io::to_radians(r.x(), spec.angle_unit));
+      g.push_back(io::to_radians(r.y(), spec.angle_unit) - p.back());
+    }
+    const double turn = 2 * pi<double>();
+    if (std::abs(p.back() - p.front() - turn) > 1e-12 * turn)
+      throw InputError(file.string(), "line " + std::to_string(rows.lines.back()),
+                       "the table must cover one turn of phi1, its last row at the first phi1 + " +
+                           io::fmt(io::from_radians(turn, spec.angle_unit)));
+    spec.closure_error = g.back() - g.front();  // f(p + 2 pi) - f(p) - 2 pi
+    g.back() = g.front();                       // the spline of g is periodic; the closure is reported
+    try {
+      spec.table_excess = MotionLaw<double>::from_table(p, g);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(file.string(), "", e.what());
+    }
+  } else {
+    const std::string kind = js.string(js.require(t, "transmission", "kind", "\"elliptical\" or \"sinusoidal\""),
+                                       "transmission.kind", "\"elliptical\" or \"sinusoidal\"");
+    spec.kind = kind;
+    if (kind == "elliptical") {
+      js.object(t, "transmission", {"kind", "eccentricity"});
+      spec.parameter = js.number(js.require(t, "transmission", "eccentricity", "the ellipses' eccentricity in [0, 1)"),
+                                 "transmission.eccentricity", "a number in [0, 1)");
+      if (!(spec.parameter >= 0 && spec.parameter < 1)) js.fail("transmission.eccentricity", "expected a number in [0, 1), got " + io::fmt(spec.parameter));
+    } else if (kind == "sinusoidal") {
+      js.object(t, "transmission", {"kind", "k"});
+      spec.parameter = js.number(js.require(t, "transmission", "k", "the amplitude k, |k| < 1"), "transmission.k", "a number");
+      if (!(std::abs(spec.parameter) < 1)) js.fail("transmission.k", "expected |k| < 1 (f' = 1 + k cos p > 0), got " + io::fmt(spec.parameter));
+    } else {
+      js.fail("transmission.kind", "unknown kind \"" + kind + "\"; expected \"elliptical\" or \"sinusoidal\" (or give \"file\")");
+    }
+  }
+  const double relative = js.number_or(root, "", "tolerance", 1e-9, "the largest deviation of gear 2's angle, as a fraction of a turn");
+  if (!(relative > 0)) js.fail("tolerance", "expected a number > 0, got " + io::fmt(relative));
+  spec.tolerance = relative * 2 * pi<double>();
+  return spec;
+}
+
+}  // namespace rollkin::synthesis
