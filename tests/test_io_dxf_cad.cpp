@@ -11,7 +11,7 @@
 #define BOOST_TEST_MODULE io_dxf_cad
 #include <boost/test/unit_test.hpp>
 
-#include "bezier_distance.hpp"
+#include "ezdxf_reference.hpp"
 #include "test_support.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
@@ -40,10 +40,7 @@ namespace {
 
 const std::string kScript = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/dxf/ezdxf_cad.py";
 
-struct RefEntity {
-  std::string label;
-  std::vector<V> points;
-};
+using rollkin::testing::RefEntity;
 struct RefCase {
   std::string file;
   DxfSelection selection;
@@ -72,14 +69,8 @@ DxfSelection parse_selection(const std::string& text) {
 }
 
 std::vector<RefCase> ezdxf_cases(const std::string& dir) {
-  const std::string command = "/usr/bin/python3 " + kScript + " " + dir + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  BOOST_REQUIRE(pipe);
-  std::string out;
-  char buf[65536];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = pclose(pipe);
-  BOOST_REQUIRE_MESSAGE(status == 0, command + " failed (python3-ezdxf and python3-mpmath installed?): " + out.substr(0, 2000));
+  const std::string args = dir;
+  const std::string out = rollkin::testing::ezdxf_script_output(kScript, args);
   std::vector<RefCase> cases;
   std::istringstream in(out);
   std::string line;
@@ -109,13 +100,6 @@ std::vector<RefCase> ezdxf_cases(const std::string& dir) {
   return cases;
 }
 
-/// The entity a segment belongs to: joint_entities names the one at its start, "A / B" at a join of two.
-std::string owner(const DxfContour& c, std::size_t segment) {
-  const std::string& j = c.joint_entities[segment];
-  const std::size_t slash = j.find(" / ");
-  return slash == std::string::npos ? j : j.substr(slash + 3);
-}
-
 double compare(const RefCase& ref) {
   const DxfContour c = rollkin::read_dxf_contour(ref.file, ref.selection);
   if (ref.selection.handles.size() > 1) {  // the same chain, walked alike, whatever the order of the handles
@@ -136,16 +120,7 @@ double compare(const RefCase& ref) {
   const BezierPath<double> path(c.segments, c.closed);
   double worst = 0;
   for (const RefEntity& e : ref.entities) {
-    std::vector<std::size_t> segments;
-    for (std::size_t i = 0; i < c.segments.size(); ++i)
-      if (owner(c, i) == e.label) segments.push_back(i);
-    BOOST_REQUIRE_MESSAGE(!segments.empty(), e.label << " has no segment in " << c.description);
-    double entity_worst = 0;
-    for (const V& q : e.points) {
-      double d = 1e300;
-      for (std::size_t i : segments) d = std::min(d, rollkin::testing::distance_to_piece(path, i, q));
-      entity_worst = std::max(entity_worst, d / size);
-    }
+    const double entity_worst = rollkin::testing::entity_distance(c, path, e, size);
     BOOST_TEST(entity_worst < 1e-12, e.label << ": ezdxf's points up to " << entity_worst << " x size off the contour");
     worst = std::max(worst, entity_worst);
   }

@@ -18,7 +18,7 @@
 #define BOOST_TEST_MODULE io_dxf_differential
 #include <boost/test/unit_test.hpp>
 
-#include "bezier_distance.hpp"
+#include "ezdxf_reference.hpp"
 #include "test_support.hpp"
 
 #include "rollkin/io/dxf.hpp"
@@ -41,10 +41,7 @@ namespace {
 
 const std::string kScript = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/dxf/ezdxf_random.py";
 
-struct RefEntity {
-  std::string label;
-  std::vector<V> points;
-};
+using rollkin::testing::RefEntity;
 struct RefChain {
   std::string file, layer;
   std::vector<RefEntity> entities;
@@ -58,14 +55,8 @@ int env_or(const char* name, int fallback) {
 
 /// Runs ezdxf_random.py and parses its blocks (see the script's docstring).
 std::vector<RefChain> ezdxf_chains(const std::string& dir, int seed, int count) {
-  const std::string command = "/usr/bin/python3 " + kScript + " " + dir + " " + std::to_string(seed) + " " + std::to_string(count) + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  BOOST_REQUIRE(pipe);
-  std::string out;
-  char buf[65536];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = pclose(pipe);
-  BOOST_REQUIRE_MESSAGE(status == 0, command + " failed (python3-ezdxf and python3-mpmath installed?): " + out.substr(0, 2000));
+  const std::string args = dir + " " + std::to_string(seed) + " " + std::to_string(count);
+  const std::string out = rollkin::testing::ezdxf_script_output(kScript, args);
   std::vector<RefChain> chains;
   std::istringstream in(out);
   std::string line, file;
@@ -93,13 +84,6 @@ std::vector<RefChain> ezdxf_chains(const std::string& dir, int seed, int count) 
   return chains;
 }
 
-/// The entity a segment belongs to: joint_entities names the one at its start, "A / B" at a join of two.
-std::string owner(const DxfContour& c, std::size_t segment) {
-  const std::string& j = c.joint_entities[segment];
-  const std::size_t slash = j.find(" / ");
-  return slash == std::string::npos ? j : j.substr(slash + 3);
-}
-
 struct Worst {
   double distance = 0, length = 0;
   std::string where;
@@ -123,16 +107,7 @@ void compare(const RefChain& ref, Worst& worst) {
     for (std::size_t k = 0; k < ref.entities.size(); ++k) {
       const RefEntity& e = ref.entities[k];
       BOOST_TEST(c.entities[k] == e.label);
-      std::vector<std::size_t> mine;
-      for (std::size_t i = 0; i < c.segments.size(); ++i)
-        if (owner(c, i) == e.label) mine.push_back(i);
-      BOOST_REQUIRE(!mine.empty());
-      double entity_worst = 0;
-      for (const V& q : e.points) {
-        double d = 1e300;
-        for (std::size_t i : mine) d = std::min(d, rollkin::testing::distance_to_piece(path, i, q));
-        entity_worst = std::max(entity_worst, d / size);
-      }
+      const double entity_worst = rollkin::testing::entity_distance(c, path, e, size);
       BOOST_TEST(entity_worst < 1e-12, e.label << ": ezdxf's points up to " << entity_worst << " x size off the contour");
       if (entity_worst > worst.distance) worst.distance = entity_worst, worst.where = ref.file + " " + e.label;
     }
