@@ -640,14 +640,17 @@ template <class S> SweepSummary<S> sweep_summary(const Mechanism<S>& m, SolveDat
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_double.cpp (docs/benchmark.md, "Build times").
-extern template double estimate_substeps(const Mechanism<double>&, const VectorX<double>&, int, const std::vector<double>&,
-                                         const ContinuationSettings<double>&);
-extern template SweepResult<double> sweep(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
-                                          const SolveReport<double>&, int, const std::vector<double>&,
-                                          const ContinuationSettings<double>&);
-extern template SweepSummary<double> sweep_summary(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
-                                                   const SolveReport<double>&, int, const std::vector<double>&,
-                                                   const ContinuationSettings<double>&);
+// The sweeps for one scalar S, after KEYWORD (`extern template` or `template`; ROLLKIN_POSITION_INSTANCES,
+// docs/benchmark.md, "Build times").
+#define ROLLKIN_CONTINUATION_INSTANCES(KEYWORD, S)                                                            \
+  KEYWORD S estimate_substeps(const Mechanism<S>&, const VectorX<S>&, int, const std::vector<S>&,               \
+                              const ContinuationSettings<S>&);                                                  \
+  KEYWORD SweepResult<S> sweep(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&, const SolveReport<S>&, int, \
+                               const std::vector<S>&, const ContinuationSettings<S>&);                          \
+  KEYWORD SweepSummary<S> sweep_summary(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&, const SolveReport<S>&, \
+                                        int, const std::vector<S>&, const ContinuationSettings<S>&);
+
+// Compiled once for double, in src/solve/instantiate_double.cpp.
+ROLLKIN_CONTINUATION_INSTANCES(extern template, double)
 
 }  // namespace rollkin
