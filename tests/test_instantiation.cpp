@@ -6,7 +6,7 @@
 #define BOOST_TEST_MODULE instantiation
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/analysis.hpp"
 #include "rollkin/builder.hpp"
 #include "rollkin/centrodes.hpp"
@@ -94,7 +94,7 @@ using namespace rollkin;
 
 namespace {
 
-/// A disk of radius 3/4 rolled along a line (tests/mechanisms.hpp, disk_on_line) with a sparse factorisation
+/// A disk of radius 3/4 rolled along a line (rollkin/samples/mechanisms.hpp, disk_on_line) with a sparse factorisation
 /// asked for: double takes it, other scalars the dense path (SolveData::resolve). The disk turns by -x / r.
 template <class S> S worst_roll_error(Factorisation asked) {
   const S r = S(3) / S(4);

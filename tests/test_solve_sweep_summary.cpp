@@ -7,7 +7,8 @@
 #define BOOST_TEST_MODULE solve_sweep_summary
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
 
 using namespace rollkin;
 using namespace rollkin::testing;
