@@ -6,6 +6,7 @@
 #include "output.hpp"
 
 #include "rollkin/design_check.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -141,8 +142,8 @@ SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd
 
 // ---- messages and reports ---------------------------------------------------------------------------------
 
-/// v with `digits` significant digits (printf's %g).
-std::string fmt(double v, int digits = 6);
+/// v with `digits` significant digits: io::format_number, under the name command_solve.cpp still calls.
+inline std::string fmt(double v, int digits = 6) { return io::format_number(v, digits); }
 
 /// "O_A.theta2 = -57.397 deg" in the file's units.
 std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal);
