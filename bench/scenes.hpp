@@ -1,9 +1,10 @@
 // Mechanisms of the benchmark: the reference example and the gear pairs with any profile representation
 // in place of the analytic curves (sampled spline, Bezier path), built exactly like the fixtures of
-// tests/mechanisms.hpp (same links, placements, pairs and variable order), and the samples they use.
+// rollkin/samples/mechanisms.hpp (same links, placements, pairs and variable order), and the samples they use.
 #pragma once
 
-#include "mechanisms.hpp"  // tests/mechanisms.hpp: paper_fourbar, elliptical_gears, assemble_fixture
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/builder.hpp"
 #include "rollkin/synthesis.hpp"
 
 #include <cmath>

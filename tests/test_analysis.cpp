@@ -18,7 +18,8 @@
 #define BOOST_TEST_MODULE analysis
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/builder.hpp"
 #include "rollkin/analysis.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"

@@ -13,7 +13,8 @@
 #define BOOST_TEST_MODULE centrodes
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/builder.hpp"
 
 #include "rollkin/centrodes.hpp"
 

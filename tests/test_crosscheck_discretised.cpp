@@ -18,6 +18,7 @@
 
 #include "discretised.hpp"
 #include "rollkin/io/units.hpp"
+#include "rollkin/solve/continuation.hpp"
 
 #include <iomanip>
 #include <map>

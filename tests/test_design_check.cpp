@@ -12,7 +12,7 @@
 #define BOOST_TEST_MODULE design_check
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/design_check.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"

@@ -9,7 +9,7 @@
 #define BOOST_TEST_MODULE golden
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/scalar_mpfr.hpp"

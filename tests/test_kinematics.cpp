@@ -4,7 +4,7 @@
 #define BOOST_TEST_MODULE kinematics
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 
 using namespace rollkin;
 using namespace rollkin::testing;

@@ -19,6 +19,7 @@
 
 #include "discretised.hpp"
 #include "rollkin/geometry/validation.hpp"
+#include "rollkin/solve/continuation.hpp"
 #include "rollkin/synthesis.hpp"
 
 #include <iomanip>

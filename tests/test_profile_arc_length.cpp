@@ -12,6 +12,7 @@
 
 #include "rollkin/io/scene.hpp"
 #include "rollkin/profile/arc_length_parameterised.hpp"
+#include "rollkin/solve/continuation.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -4,7 +4,9 @@
 #define BOOST_TEST_MODULE profile_representation
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
+#include "rollkin/builder.hpp"
 
 using namespace rollkin;
 using namespace rollkin::testing;

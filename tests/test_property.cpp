@@ -14,7 +14,8 @@
 #define BOOST_TEST_MODULE property
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/builder.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"

@@ -7,7 +7,8 @@
 #define BOOST_TEST_MODULE solve_allocation
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
 #include "test_support.hpp"
 
 #include "rollkin/io/output_set.hpp"

@@ -4,7 +4,8 @@
 #define BOOST_TEST_MODULE solve_closed_forms
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/builder.hpp"
 
 using namespace rollkin;
 using namespace rollkin::testing;

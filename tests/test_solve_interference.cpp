@@ -11,7 +11,9 @@
 #define BOOST_TEST_MODULE solve_interference
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
+#include "rollkin/builder.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/solve/interference.hpp"
 

@@ -11,7 +11,7 @@
 #define BOOST_TEST_MODULE solve_mpfr
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"

@@ -5,7 +5,8 @@
 #define BOOST_TEST_MODULE solve_paper
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
 #include "../bench/hand_paper.hpp"
 
 using namespace rollkin;

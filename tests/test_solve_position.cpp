@@ -8,7 +8,7 @@
 #define BOOST_TEST_MODULE solve_position
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 
 #include <random>
 

@@ -4,7 +4,8 @@
 #define BOOST_TEST_MODULE solve_scale
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
 
 #include <cmath>
 

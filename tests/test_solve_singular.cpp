@@ -4,7 +4,7 @@
 #define BOOST_TEST_MODULE solve_singular
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 
 #include <array>
 #include <cmath>
@@ -169,7 +169,7 @@ BOOST_AUTO_TEST_CASE(determinant_sign_follows_row_swaps_and_pivots) {
 
 BOOST_AUTO_TEST_CASE(redundant_mechanism_passes_a_change_point_landed_on_exactly) {
   // Two rolling disks (radii 1 and 1.5: phi_1 = -phi_0 / 1.5; the centre distance row is redundant, 7 equations
-  // and 6 unknowns) whose second disk drives a parallelogram (tests/mechanisms.hpp,
+  // and 6 unknowns) whose second disk drives a parallelogram (rollkin/samples/mechanisms.hpp,
   // gear_train_with_parallelogram): on its branch the rocker turns with disk 1, theta = phi_1, and at
   // phi_1 = -90 deg (phi_0 = 135 deg, a grid value) the crossed branch meets it. A change point is no motion
   // limit: the sweep must go on past it on the same branch, as it does for the square anti-parallelogram.

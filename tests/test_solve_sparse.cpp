@@ -1,5 +1,5 @@
 // The sparse path of the position solver (solve/sparse_lu.hpp) on generated mechanisms of n loops
-// (tests/mechanisms.hpp: disk_train, four_bar_chain, cam_gear_train) up to n = 256: results equal the closed
+// (rollkin/samples/mechanisms.hpp: disk_train, four_bar_chain, cam_gear_train) up to n = 256: results equal the closed
 // forms and the dense solver's; redundant constraints found as by the dense path; inconsistent and
 // underdetermined mechanisms reported as before; the determinant sign that the continuation tracks branches
 // with is the dense path's, and a sweep through the change points of a parallelogram stage keeps its branch
@@ -7,7 +7,7 @@
 #define BOOST_TEST_MODULE solve_sparse
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"
 
@@ -73,7 +73,7 @@ double max_difference(const std::vector<VectorX<double>>& a, const std::vector<V
   return d;
 }
 
-/// Gear train: phi_k = (-1)^k (r_0 / r_k) phi_0 (tests/mechanisms.hpp).
+/// Gear train: phi_k = (-1)^k (r_0 / r_k) phi_0 (rollkin/samples/mechanisms.hpp).
 double gear_train_error_deg(int n, const std::vector<VectorX<double>>& poses) {
   double worst = 0;
   for (const auto& q : poses)
@@ -84,7 +84,7 @@ double gear_train_error_deg(int n, const std::vector<VectorX<double>>& poses) {
   return worst;
 }
 
-/// Rocker k+1's angle in a four-bar chain from rocker k's (tests/mechanisms.hpp four_bar_chain): pin B_k is
+/// Rocker k+1's angle in a four-bar chain from rocker k's (rollkin/samples/mechanisms.hpp four_bar_chain): pin B_k is
 /// where the circle of radius `coupler` about pin A_k meets the circle of radius c about pivot k+1, on the left
 /// of the line from A_k to pivot k+1, where it lies at rest (pins straight up) and stays while the bar's
 /// transmission angle is neither 0 nor 180 deg. A parallelogram bar (a = c, coupler = pivot spacing) on its
@@ -114,7 +114,7 @@ double chain_error_deg(int n, const std::vector<VectorX<double>>& poses,
 }
 
 /// Height of a follower of cam_gear_train above its disk's pivot at the cam's angle phi (the closed forms of
-/// tests/mechanisms.hpp): roller centre at distance R + r from the cam centre e (cos phi, sin phi) on the
+/// rollkin/samples/mechanisms.hpp): roller centre at distance R + r from the cam centre e (cos phi, sin phi) on the
 /// vertical through the pivot; flat face through (0, s) with normal (-sin beta, cos beta) at distance R.
 double follower_height(const CamFollowerDims<double>& d, double phi) {
   if (d.roller) return d.e * std::sin(phi) + std::sqrt((d.R + d.r) * (d.R + d.r) - std::pow(d.e * std::cos(phi), 2));

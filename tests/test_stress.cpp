@@ -11,7 +11,9 @@
 #define BOOST_TEST_MODULE stress
 #include <boost/test/unit_test.hpp>
 
-#include "mechanisms.hpp"
+#include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
+#include "rollkin/builder.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <chrono>

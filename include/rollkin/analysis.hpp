@@ -237,8 +237,12 @@ template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const std
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
-extern template PoseAnalysis<double> analyse_pose(const Mechanism<double>&, const VectorX<double>&, const VectorX<double>&,
-                                                  AnalysisData<double>&);
+// The pose analysis for one scalar S, after KEYWORD (`extern template` or `template`; ROLLKIN_POSITION_INSTANCES
+// in solve/position.hpp, docs/benchmark.md, "Build times").
+#define ROLLKIN_ANALYSIS_INSTANCES(KEYWORD, S) \
+  KEYWORD PoseAnalysis<S> analyse_pose(const Mechanism<S>&, const VectorX<S>&, const VectorX<S>&, AnalysisData<S>&);
+
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp.
+ROLLKIN_ANALYSIS_INSTANCES(extern template, double)
 
 }  // namespace rollkin

@@ -61,8 +61,13 @@ template <class S> std::vector<InstantCentre<S>> centrodes(const Mechanism<S>& m
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
-extern template std::vector<InstantCentre<double>> centrodes(const Mechanism<double>&, KinematicsData<double>&,
-                                                             const SweepResult<double>&, int, int);
+// The centrodes for one scalar S, after KEYWORD (`extern template` or `template`; ROLLKIN_POSITION_INSTANCES in
+// solve/position.hpp, docs/benchmark.md, "Build times").
+#define ROLLKIN_CENTRODES_INSTANCES(KEYWORD, S)                                                                \
+  KEYWORD std::vector<InstantCentre<S>> centrodes(const Mechanism<S>&, KinematicsData<S>&, const SweepResult<S>&, \
+                                                  int, int);
+
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp.
+ROLLKIN_CENTRODES_INSTANCES(extern template, double)
 
 }  // namespace rollkin

@@ -362,8 +362,12 @@ template <class S> DesignCheck<S> check_design(const Mechanism<S>& m, const Swee
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
-extern template DesignCheck<double> check_design(const Mechanism<double>&, const SweepResult<double>&,
-                                                 const DesignCheckOptions&);
+// The design check for one scalar S, after KEYWORD (`extern template` or `template`; ROLLKIN_POSITION_INSTANCES
+// in solve/position.hpp, docs/benchmark.md, "Build times").
+#define ROLLKIN_DESIGN_CHECK_INSTANCES(KEYWORD, S) \
+  KEYWORD DesignCheck<S> check_design(const Mechanism<S>&, const SweepResult<S>&, const DesignCheckOptions&);
+
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp.
+ROLLKIN_DESIGN_CHECK_INSTANCES(extern template, double)
 
 }  // namespace rollkin

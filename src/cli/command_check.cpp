@@ -18,8 +18,8 @@ std::string contour_name(const Mechanism<double>& m, int contour) { return m.con
 std::string point_text(const io::Scene& scene, int variable, const TouchedPoint<double>& t) {
   const std::string unit = scene.unit_label(variable);
   const Mechanism<double>& m = scene.mechanism;
-  return m.variables[variable].name + " = " + fmt(t.u / scene.unit_of(variable), 10) + (unit.empty() ? "" : " " + unit) +
-         " (point " + fmt(t.point.x(), 10) + ", " + fmt(t.point.y(), 10) + ")";
+  return m.variables[variable].name + " = " + io::format_number(t.u / scene.unit_of(variable), 10) + (unit.empty() ? "" : " " + unit) +
+         " (point " + io::format_number(t.point.x(), 10) + ", " + io::format_number(t.point.y(), 10) + ")";
 }
 
 /// The curvature line(s) of one contour of a pair: its sharpest convex and concave points touched.
@@ -28,14 +28,14 @@ std::vector<std::string> curvature_lines(const io::Scene& scene, const io::Sweep
   const std::string name = contour_name(scene.mechanism, c.contour);
   if (c.circle) {
     const bool convex = c.sharpest_convex.found;
-    return {name + ": circle of radius " + fmt(c.radius, 10) + (convex ? " (convex)" : " (concave)")};
+    return {name + ": circle of radius " + io::format_number(c.radius, 10) + (convex ? " (convex)" : " (concave)")};
   }
   std::vector<std::string> lines;
   if (c.sharpest_convex.found)
-    lines.push_back(name + ": smallest convex radius of curvature " + fmt(1 / c.sharpest_convex.kappa, 10) + " at " +
+    lines.push_back(name + ": smallest convex radius of curvature " + io::format_number(1 / c.sharpest_convex.kappa, 10) + " at " +
                     point_text(scene, variable, c.sharpest_convex) + ", " + input_text(scene, sw, c.sharpest_convex.input));
   if (c.sharpest_concave.found)
-    lines.push_back(name + ": smallest concave radius of curvature " + fmt(-1 / c.sharpest_concave.kappa, 10) + " at " +
+    lines.push_back(name + ": smallest concave radius of curvature " + io::format_number(-1 / c.sharpest_concave.kappa, 10) + " at " +
                     point_text(scene, variable, c.sharpest_concave) + ", " + input_text(scene, sw, c.sharpest_concave.input));
   if (lines.empty()) lines.push_back(name + ": straight where touched");
   return lines;
@@ -46,27 +46,27 @@ std::string finding_line(const io::Scene& scene, const io::Sweep& sw, const Pair
   const Mechanism<double>& m = scene.mechanism;
   const Pair<double>& p = m.pairs[d.pair];
   const std::string where = input_text(scene, sw, d.worst[0].input);
-  const std::string sum = "kappa1 + kappa2 = " + fmt(d.worst_relative) + " < 0";
+  const std::string sum = "kappa1 + kappa2 = " + io::format_number(d.worst_relative) + " < 0";
   if (d.roller < 0)
     return "interpenetration: the contours '" + contour_name(m, p.contour_a) + "' and '" + contour_name(m, p.contour_b) +
            "' of pair '" + p.name + "' interpenetrate next to their contact at " +
            point_text(scene, p.first_variable, d.worst[0]) + " and " + point_text(scene, p.first_variable + 1, d.worst[1]) +
-           ", " + where + " (" + sum + "; curvatures " + fmt(d.worst[0].kappa) + " and " + fmt(d.worst[1].kappa) +
+           ", " + where + " (" + sum + "; curvatures " + io::format_number(d.worst[0].kappa) + " and " + io::format_number(d.worst[1].kappa) +
            "): the design is impossible there";
   const int other = 1 - d.roller;
   const int variable = p.first_variable + other;
   const std::string wall = contour_name(m, d.contours[other].contour);
   const double r = d.contours[d.roller].radius;
   std::string line = "undercut: pair '" + p.name + "': the roller '" + contour_name(m, d.contours[d.roller].contour) +
-                     "' (radius " + fmt(r, 10) + ") is larger than the concave radius " +
-                     fmt(-1 / d.worst[other].kappa, 10) + " of '" + wall + "' it must enter at " +
+                     "' (radius " + io::format_number(r, 10) + ") is larger than the concave radius " +
+                     io::format_number(-1 / d.worst[other].kappa, 10) + " of '" + wall + "' it must enter at " +
                      point_text(scene, variable, d.worst[other]) + ", " + where + " (" + sum +
                      ": the contours interpenetrate)";
   std::vector<std::string> ends;
   for (const auto& c : d.cusps)
     if (c.found) ends.push_back(point_text(scene, variable, c));
   if (!ends.empty()) {
-    line += "; the roller-centre path (the offset of '" + wall + "' by " + fmt(r, 10) + ") has a cusp at " + ends[0];
+    line += "; the roller-centre path (the offset of '" + wall + "' by " + io::format_number(r, 10) + ") has a cusp at " + ends[0];
     if (ends.size() > 1) line += " and at " + ends[1];
     line += ends.size() > 1 ? ": the roller cannot follow the contour between them" : "";
   }
@@ -77,12 +77,12 @@ std::string finding_line(const io::Scene& scene, const io::Sweep& sw, const Pair
 std::string roller_line(const Mechanism<double>& m, const PairDesignCheck<double>& d) {
   const ContourCurvatureCheck<double>& roller = d.contours[d.roller];
   const ContourCurvatureCheck<double>& other = d.contours[1 - d.roller];
-  std::string line = "roller '" + contour_name(m, roller.contour) + "' (radius " + fmt(roller.radius, 10) + ") on '" +
+  std::string line = "roller '" + contour_name(m, roller.contour) + "' (radius " + io::format_number(roller.radius, 10) + ") on '" +
                      contour_name(m, other.contour) + "': ";
   if (!other.sharpest_concave.found) return line + "no concave part touched";
   const double rho = -1 / other.sharpest_concave.kappa;
-  if (d.conformity == Conformity::Interpenetrating) return line + "too large for its smallest concave radius " + fmt(rho, 10);
-  return line + "fits its smallest concave radius " + fmt(rho, 10) +
+  if (d.conformity == Conformity::Interpenetrating) return line + "too large for its smallest concave radius " + io::format_number(rho, 10);
+  return line + "fits its smallest concave radius " + io::format_number(rho, 10) +
          (d.conformity == Conformity::Osculating ? " (equal: osculating)" : "");
 }
 
@@ -107,7 +107,7 @@ DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const Sw
       for (const auto& l : curvature_lines(scene, sw, p.first_variable + side, d.contours[side]))
         out.section.push_back("    " + l);
     if (d.roller >= 0) out.section.push_back("    " + roller_line(m, d));
-    out.section.push_back("    smallest relative curvature kappa1 + kappa2 = " + fmt(d.worst_relative, 10) + " at " +
+    out.section.push_back("    smallest relative curvature kappa1 + kappa2 = " + io::format_number(d.worst_relative, 10) + " at " +
                           input_text(scene, sw, d.worst[0].input) + ": " + to_string(d.conformity));
     if (d.conformity == Conformity::Interpenetrating) out.findings.push_back(finding_line(scene, sw, d));
   }
@@ -165,7 +165,7 @@ int run_check(const CheckOptions& o) {
   const std::size_t solved = found.solved() + found.singular.size();  // every pose with values
   const std::string unit = scene.unit_label(sw.variable);
   std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << run.inputs.size()
-            << " poses solved, " << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to)
+            << " poses solved, " << sw.input << " from " << io::format_number(sw.from) << " to " << io::format_number(sw.to)
             << (unit.empty() ? "" : " " + unit) << "\n";
   for (const auto& l : design.section) std::cout << l << "\n";
   for (const auto& f : design.findings) std::cerr << scene.file << ": " << f << "\n";

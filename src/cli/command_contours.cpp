@@ -45,8 +45,8 @@ Command contours_command(CLI::App& rollkin) {
 namespace {
 
 std::string box_text(const io::ListedChain& c) {
-  return "(" + fmt(c.min.x(), 10) + ", " + fmt(c.min.y(), 10) + ") to (" + fmt(c.max.x(), 10) + ", " +
-         fmt(c.max.y(), 10) + ")";
+  return "(" + io::format_number(c.min.x(), 10) + ", " + io::format_number(c.min.y(), 10) + ") to (" + io::format_number(c.max.x(), 10) + ", " +
+         io::format_number(c.max.y(), 10) + ")";
 }
 
 nlohmann::ordered_json chain_json(const io::ListedChain& c) {
@@ -100,7 +100,7 @@ int run_contours(const ContoursOptions& o) {
       std::string entities;
       for (const auto& e : c.entities) entities += (entities.empty() ? "" : ", ") + e;
       std::cout << k + 1 << ". " << c.group << ": " << entities << "; " << (c.closed ? "closed" : "open") << ", length "
-                << fmt(c.length, 10) << ", box " << box_text(c) << ", " << c.corners << " corner(s)\n   "
+                << io::format_number(c.length, 10) << ", box " << box_text(c) << ", " << c.corners << " corner(s)\n   "
                 << c.selector << "\n";
     }
   }

@@ -20,11 +20,11 @@ void print_assembly(std::ostream& out, const io::Scene& scene, const SolveReport
   const Mechanism<double>& m = scene.mechanism;
   for (const std::string& n : scene.notes) out << "contour " << n << "\n";
   out << "assembly: " << to_string(rep.status) << " after " << rep.iterations << " iteration(s), residual "
-            << fmt(rep.residual, 3) << "\n"
+            << io::format_number(rep.residual, 3) << "\n"
             << "  variables " << m.variable_count() << " (inputs " << m.drivers.size() << ", unknowns " << m.unknowns.size()
             << "), equations " << m.equation_count() << " (" << m.loops.size() << " loop(s) x 3 + "
             << m.rolling_pairs.size() << " rolling)\n"
-            << "  rank of the unknowns' Jacobian " << rep.rank << ", condition " << fmt(rep.condition, 3) << "\n"
+            << "  rank of the unknowns' Jacobian " << rep.rank << ", condition " << io::format_number(rep.condition, 3) << "\n"
             << "  rank of the full Jacobian " << ar.rank << ": redundant constraints " << ar.redundant
             << ", mobility (DOF = variables - rank) " << ar.mobility << "\n";
   if (!rep.detail.empty()) out << "  " << rep.detail << "\n";
@@ -47,7 +47,7 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
     const double size = std::max(std::abs(ka), std::abs(kb));
     if (size > 0 && std::abs(ka + kb) <= 1e-6 * size)
       out.push_back("osculation: at the assembly pose the contours of pair '" + m.pairs[k].name +
-                    "' osculate (signed curvatures " + fmt(ka) + " and " + fmt(kb) +
+                    "' osculate (signed curvatures " + io::format_number(ka) + " and " + io::format_number(kb) +
                     " cancel), so the contact Jacobian is singular there; choose another assembly pose or geometry");
   }
   return out;
@@ -80,10 +80,10 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sw
   const std::string unit = scene.unit_label(sw.variable);
   for (const auto& r : runs)
     lines.push_back(std::string("interference: ") + to_string(r.kind) + " between '" + m.contours[r.a].name() +
-                    "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + fmt(r.from / sw.unit, 8) +
-                    " to " + fmt(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit) + " (decided on chords within " +
-                    fmt(std::max(si.chord_error[r.a], si.chord_error[r.b]), 2) + " " + scene.length_unit +
-                    " of the contours, touch tolerance " + fmt(si.touch_tolerance, 2) + " " + scene.length_unit + ")");
+                    "' and '" + m.contours[r.b].name() + "' for " + sw.input + " from " + io::format_number(r.from / sw.unit, 8) +
+                    " to " + io::format_number(r.to / sw.unit, 8) + (unit.empty() ? "" : " " + unit) + " (decided on chords within " +
+                    io::format_number(std::max(si.chord_error[r.a], si.chord_error[r.b]), 2) + " " + scene.length_unit +
+                    " of the contours, touch tolerance " + io::format_number(si.touch_tolerance, 2) + " " + scene.length_unit + ")");
   return lines;
 }
 
@@ -218,8 +218,8 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   const std::string unit = scene.unit_label(sw.variable);
   std::ostringstream summary;
   summary << fs::path(scene.file).filename().string() << ": " << solved << "/" << inputs.size() << " poses solved, "
-          << sw.input << " from " << fmt(sw.from) << " to " << fmt(sw.to) << (unit.empty() ? "" : " " + unit)
-          << ", max residual " << fmt(found.max_residual, 2) << ", ";
+          << sw.input << " from " << io::format_number(sw.from) << " to " << io::format_number(sw.to) << (unit.empty() ? "" : " " + unit)
+          << ", max residual " << io::format_number(found.max_residual, 2) << ", ";
   if (!assembly.ok()) {
     summary << "assembly failed (" << to_string(assembly.status) << ")";
   } else if (found.limits.empty()) {
@@ -228,7 +228,7 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
     summary << found.limits.size() << " limit(s) met:";
     for (std::size_t i = 0; i < found.limits.size(); ++i)
       summary << (i ? "," : "") << " " << to_string(found.limits[i].status) << " at "
-              << fmt(found.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
+              << io::format_number(found.limits[i].limit_input / sw.unit, 8) << (unit.empty() ? "" : " " + unit);
   }
   if (!found.singular.empty()) summary << ", " << found.singular.size() << " singular pose(s)";
   out << summary.str() << "\n";

@@ -168,12 +168,12 @@ std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProf
 /// The law's unit for messages: the length unit, or the angle unit of an oscillating follower.
 std::string law_value(const synthesis::CamSpec& spec, double v) {
   if (spec.motion == synthesis::FollowerMotion::Oscillating)
-    return fmt(io::from_radians(v, spec.angle_unit), 6) + " " + io::unit_label(spec.angle_unit);
-  return fmt(v, 6) + (spec.length_label.empty() ? "" : " " + spec.length_label);
+    return io::format_number(io::from_radians(v, spec.angle_unit), 6) + " " + io::unit_label(spec.angle_unit);
+  return io::format_number(v, 6) + (spec.length_label.empty() ? "" : " " + spec.length_label);
 }
 
 std::string angle_value(const synthesis::CamSpec& spec, double rad) {
-  return fmt(io::from_radians(rad, spec.angle_unit), 10) + " " + io::unit_label(spec.angle_unit);
+  return io::format_number(io::from_radians(rad, spec.angle_unit), 10) + " " + io::unit_label(spec.angle_unit);
 }
 
 int run_synthesize_cam(const SynthesizeCamOptions& o) {
@@ -188,7 +188,7 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
     const char* what[] = {"the displacement jumps (no motion can follow it)", "the velocity jumps (infinite acceleration)",
                           "the acceleration jumps (infinite jerk)"};
     std::cerr << o.spec << ": law: at cam angle " << angle_value(spec, j.theta) << " " << what[j.order] << ": from "
-              << fmt(j.left) << " to " << fmt(j.right) << "\n";
+              << io::format_number(j.left) << " to " << io::format_number(j.right) << "\n";
   }
 
   g_doing = "computing the cam profile";
@@ -196,7 +196,7 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   if (!profile.envelope.defects.empty()) {
     for (const auto& d : profile.envelope.defects)
       std::cerr << o.spec << ": undercut: at cam angle " << angle_value(spec, d.t) << " " << d.what
-                << (std::isfinite(d.point.x()) ? " (profile point " + fmt(d.point.x(), 10) + ", " + fmt(d.point.y(), 10) + ")" : "")
+                << (std::isfinite(d.point.x()) ? " (profile point " + io::format_number(d.point.x(), 10) + ", " + io::format_number(d.point.y(), 10) + ")" : "")
                 << "\n";
     std::cerr << o.spec << ": the profile is undercut (a smaller roller or a larger base circle avoids it); nothing written\n";
     return 1;
@@ -215,14 +215,14 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   g_doing = "analysing the cam (round trip)";
   const synthesis::CamRoundTrip rt = synthesis::cam_round_trip(spec, scene_file);
   std::cout << o.spec << ": profile of " << profile.points.size() << " points (spline within "
-            << fmt(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
+            << io::format_number(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
             << dxf << ", " << svg << ", " << scene_file << "\n";
   std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n";
   std::cout << "  worst deviation of the follower from the law: " << law_value(spec, rt.worst_deviation) << " at cam angle "
             << angle_value(spec, rt.worst_deviation_at) << " (tolerance " << law_value(spec, spec.tolerance) << ")\n";
-  std::cout << "  largest pressure angle: " << fmt(rt.max_pressure_angle * 180 / pi<double>(), 10) << " deg at cam angle "
+  std::cout << "  largest pressure angle: " << io::format_number(rt.max_pressure_angle * 180 / pi<double>(), 10) << " deg at cam angle "
             << angle_value(spec, rt.max_pressure_angle_at) << "\n";
-  std::cout << "  smallest radius of curvature of the profile: " << fmt(rt.min_radius_of_curvature, 10)
+  std::cout << "  smallest radius of curvature of the profile: " << io::format_number(rt.min_radius_of_curvature, 10)
             << (rt.min_radius_of_curvature < 0 ? " (concave)" : "") << " at cam angle " << angle_value(spec, rt.min_radius_at) << "\n";
   for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
   const bool ok = rt.problems.empty() && rt.solved == rt.poses && rt.worst_deviation <= spec.tolerance;
@@ -251,8 +251,8 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
                     i_dxf = outputs.add("--out (DXF)", dxf), i_scene = outputs.add("--out (scene)", scene_file);
   const std::string deg = io::unit_label(spec.angle_unit);
   if (std::abs(spec.closure_error) > spec.tolerance) {
-    std::cerr << o.spec << ": the pair does not close: f(phi + " << fmt(io::from_radians(2 * pi<double>(), spec.angle_unit))
-              << ") - f(phi) = " << fmt(io::from_radians(2 * pi<double>() + spec.closure_error, spec.angle_unit), 12) << " " << deg
+    std::cerr << o.spec << ": the pair does not close: f(phi + " << io::format_number(io::from_radians(2 * pi<double>(), spec.angle_unit))
+              << ") - f(phi) = " << io::format_number(io::from_radians(2 * pi<double>() + spec.closure_error, spec.angle_unit), 12) << " " << deg
               << ", not one turn (gear 2 would not come back to its start after a turn of gear 1); nothing written\n";
     return 1;
   }
@@ -273,18 +273,18 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
   g_doing = "analysing the gears (round trip)";
   const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
   std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
-            << fmt(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
+            << io::format_number(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
             << scene_file << "\n";
   for (int gear = 1; gear <= 2; ++gear) {
     const double kappa = gear == 1 ? d.min_curvature1 : d.min_curvature2, at = gear == 1 ? d.min_curvature1_at : d.min_curvature2_at;
     std::cout << "  gear " << gear << ": " << (kappa > 0 ? "convex" : "NOT convex (teeth cut on it would undercut)")
-              << ", smallest curvature " << fmt(kappa, 8) << " at polar angle " << fmt(io::from_radians(at, spec.angle_unit), 8)
+              << ", smallest curvature " << io::format_number(kappa, 8) << " at polar angle " << io::format_number(io::from_radians(at, spec.angle_unit), 8)
               << " " << deg << "\n";
   }
   std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n"
-            << "  worst deviation of gear2.phi from -f(gear1.phi): " << fmt(io::from_radians(rt.worst_deviation, spec.angle_unit)) << " "
-            << deg << " at gear1.phi = " << fmt(io::from_radians(rt.worst_deviation_at, spec.angle_unit), 10) << " " << deg
-            << " (tolerance " << fmt(io::from_radians(spec.tolerance, spec.angle_unit)) << " " << deg << ")\n";
+            << "  worst deviation of gear2.phi from -f(gear1.phi): " << io::format_number(io::from_radians(rt.worst_deviation, spec.angle_unit)) << " "
+            << deg << " at gear1.phi = " << io::format_number(io::from_radians(rt.worst_deviation_at, spec.angle_unit), 10) << " " << deg
+            << " (tolerance " << io::format_number(io::from_radians(spec.tolerance, spec.angle_unit)) << " " << deg << ")\n";
   for (const auto& p : rt.problems) std::cerr << scene_file << ": " << p << "\n";
   return rt.problems.empty() && rt.worst_deviation <= spec.tolerance ? 0 : 1;
 }
@@ -329,8 +329,8 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   g_doing = "writing the output files";
   run.outputs.commit();
   std::cout << scene.file << ": envelope of " << o.contour << " relative to link " << o.links[0] << ": " << pts.size() << " points"
-            << (env.closed ? " (closed)" : " (open)") << ", spline within " << fmt(env.max_midpoint_deviation, 3)
-            << " at every mid-pose (tolerance " << fmt(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
+            << (env.closed ? " (closed)" : " (open)") << ", spline within " << io::format_number(env.max_midpoint_deviation, 3)
+            << " at every mid-pose (tolerance " << io::format_number(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
   for (const auto& d : env.defects)
     std::cerr << scene.file << ": at " << input_text(scene, run.sweep, d.t) << ": " << d.what << "\n";
   return env.defects.empty() && result.limits.empty() ? 0 : 1;

@@ -185,15 +185,9 @@ SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd
 
 // ---- messages and reports ---------------------------------------------------------------------------------
 
-std::string fmt(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
 std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal) {
   const std::string unit = scene.unit_label(sw.variable);
-  return sw.input + " = " + fmt(internal / sw.unit, 8) + (unit.empty() ? "" : " " + unit);
+  return sw.input + " = " + io::format_number(internal / sw.unit, 8) + (unit.empty() ? "" : " " + unit);
 }
 
 std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r) {
@@ -202,7 +196,7 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
   switch (r.status) {
     case SolveStatus::DeadPoint:
       return "dead_point: dead point (motion limit) at " + where + ": the mechanism cannot move past it (Jacobian " +
-             "singular there, condition " + fmt(r.condition, 3) + ")";
+             "singular there, condition " + io::format_number(r.condition, 3) + ")";
     case SolveStatus::DomainExit: {
       std::string what = "a contact leaves its contour";
       if (r.pair >= 0 && r.contour >= 0)
@@ -212,8 +206,9 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
     case SolveStatus::Corner: {
       const ContourCorner<double>& k = m.contours[r.contour].corners()[static_cast<std::size_t>(r.corner)];
       return "corner: the contact of pair '" + m.pairs[r.pair].name + "' reaches a corner of contour '" +
-             m.contours[r.contour].name() + "' (" + k.label + "; (" + fmt(k.point.x(), 10) + ", " + fmt(k.point.y(), 10) +
-             ") in the contour's frame) at " + where + ": a contact cannot pass a corner";
+             m.contours[r.contour].name() + "' (" + k.label + "; (" + io::format_number(k.point.x(), 10) + ", " +
+             io::format_number(k.point.y(), 10) + ") in the contour's frame) at " + where +
+             ": a contact cannot pass a corner";
     }
     case SolveStatus::NoConvergence: return "no_convergence: Newton-Raphson does not converge beyond " + where;
     default: return std::string(to_string(r.status)) + ": " + r.detail + " (at " + where + ")";
@@ -228,12 +223,12 @@ std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep&
     problems.push_back(std::string(to_string(assembly.status)) + ": assembly failed: " +
                        (assembly.detail.empty() ? "the mechanism cannot be assembled" : assembly.detail) +
                        " (rank " + std::to_string(assembly.rank) + " of " + std::to_string(assembly.unknowns) +
-                       " unknowns, condition " + fmt(assembly.condition, 3) + ")");
+                       " unknowns, condition " + io::format_number(assembly.condition, 3) + ")");
   for (const auto& l : summary.limits) problems.push_back(limit_line(scene, sw, l));
   for (const auto& p : summary.singular)
     problems.push_back("singular: singular pose at " + input_text(scene, sw, inputs[p.index]) +
                        ": the branches meet / Jacobian singular; values follow the branch (interpolated between"
-                       " the regular poses on both sides, condition " + fmt(p.report.condition, 3) + ")");
+                       " the regular poses on both sides, condition " + io::format_number(p.report.condition, 3) + ")");
   return problems;
 }
 

@@ -8,6 +8,7 @@
 #include "rollkin/output/sweep_files.hpp"
 
 #include "rollkin/design_check.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -142,9 +143,6 @@ std::string with_scene_name(const std::string& pattern, const std::string& stem)
 SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q);
 
 // ---- messages and reports ---------------------------------------------------------------------------------
-
-/// v with `digits` significant digits (printf's %g).
-std::string fmt(double v, int digits = 6);
 
 /// "O_A.theta2 = -57.397 deg" in the file's units.
 std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal);

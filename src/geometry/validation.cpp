@@ -2,6 +2,7 @@
 // (orientation, collinear, angle, do_intersect on segments); the only constructions are the reported
 // crossing points and the signed area, both informational.
 #include "rollkin/geometry/validation.hpp"
+#include "rollkin/io/format.hpp"
 
 #include "epick.hpp"
 
@@ -280,14 +281,9 @@ ValidationReport validate_polyline(const std::vector<Vec2<double>>& pts, bool cl
 // ---- messages --------------------------------------------------------------------------------------
 namespace {
 
-std::string fmt(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+using io::format_number;
 
-std::string fmt(const Vec2<double>& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
+std::string point_text(const Vec2<double>& p) { return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ")"; }
 
 /// Names samples in messages: "sample 12", or "line 14" when the samples came from a file with those lines.
 struct SampleNames {
@@ -314,32 +310,32 @@ std::string describe(const ValidationIssue& i, const ValidationReport& r, const 
   switch (i.kind) {
     case IssueKind::TooFewSamples:
       return "only " + std::to_string(i.first) + " usable samples; " + (r.closed ? "a closed" : "an open") +
-             " contour needs at least " + fmt(i.limit);
+             " contour needs at least " + format_number(i.limit);
     case IssueKind::NonFiniteSample:
-      return name.one(i.first) + " has a non-finite coordinate " + fmt(i.point) +
+      return name.one(i.first) + " has a non-finite coordinate " + point_text(i.point) +
              "; every coordinate must be a finite number";
     case IssueKind::CoincidentSamples:
       return name.two(i.first, i.second) +
-             (i.second == 0 ? " (the implicit closing segment)" : "") + " coincide (distance " + fmt(i.value) +
-             (i.value < i.limit ? " < " : " <= ") + fmt(r.rel_tol) + " of the contour size); remove one";
+             (i.second == 0 ? " (the implicit closing segment)" : "") + " coincide (distance " + format_number(i.value) +
+             (i.value < i.limit ? " < " : " <= ") + format_number(r.rel_tol) + " of the contour size); remove one";
     case IssueKind::SelfIntersection:
-      return name.segment(i.first, n) + " and " + name.segment(i.second, n) + " cross at " + fmt(i.point) +
+      return name.segment(i.first, n) + " and " + name.segment(i.second, n) + " cross at " + point_text(i.point) +
              "; a contour must not intersect itself: fix the sample order or remove the loop";
     case IssueKind::FoldsBack:
-      return "the contour folds back at " + name.one(i.first) + " " + fmt(i.point) +
+      return "the contour folds back at " + name.one(i.first) + " " + point_text(i.point) +
              " (its neighbours lie on the same side of it, on one line); remove the sample or its spike";
     case IssueKind::OpenEndsMeet:
-      return "warning: the first and last samples of this open contour coincide (distance " + fmt(i.value) +
+      return "warning: the first and last samples of this open contour coincide (distance " + format_number(i.value) +
              "); if it is meant to be closed, declare it closed and drop the last sample";
     case IssueKind::LongClosingSegment:
       return "warning: the implicit closing segment from " + name.one(i.first) +
-             " back to the first one is " + fmt(i.value) +
+             " back to the first one is " + format_number(i.value) +
              " times as long as the longest other segment; if the contour is open, declare it open, "
              "otherwise add samples along that gap";
     case IssueKind::WrongMaterialSide: {
       const bool left = r.expected == MaterialSide::Left;
       return std::string("the closed contour runs ") + (left ? "clockwise" : "counter-clockwise") +
-             " (signed area " + fmt(i.value) + ") but material on the " + (left ? "left" : "right") +
+             " (signed area " + format_number(i.value) + ") but material on the " + (left ? "left" : "right") +
              " needs it " + (left ? "counter-clockwise" : "clockwise") + "; reverse the sample order";
     }
   }

@@ -35,12 +35,6 @@ std::string kind_of(const json& j) {
   }
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 void JsonAccess::fail(const std::string& path, const std::string& message) const { throw InputError(file_, path, message); }
 
 void JsonAccess::object(const json& j, const std::string& path, const std::vector<std::string>& allowed) const {

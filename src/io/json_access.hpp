@@ -4,6 +4,7 @@
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/se2.hpp"
 
@@ -26,7 +27,6 @@ std::string index(const std::string& path, std::size_t i);
 /// "an object", "a number", ... for messages.
 std::string kind_of(const json& j);
 /// Shortest natural text of a number (as an ostream prints it).
-std::string fmt(double v);
 
 /// The accessors, bound to the file named in messages.
 class JsonAccess {

@@ -2,6 +2,7 @@
 
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/decimate.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/input_error.hpp"
 
 #include <algorithm>
@@ -84,11 +85,8 @@ std::string px(double v) {
   return s;
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+/// Sizes and widths of the drawing: 4 significant digits.
+std::string num(double v) { return format_number(v, 4); }
 
 /// 1, 2, 2.5, 5 or 10 times a power of ten, the smallest not below raw.
 double nice_step(double raw) {

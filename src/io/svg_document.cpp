@@ -3,6 +3,8 @@
 #include "rollkin/io/svg_path.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/text_position.hpp"
+#include "rollkin/io/units.hpp"
+#include "rollkin/io/format.hpp"
 
 #include "svg_detail.hpp"
 
@@ -24,14 +26,8 @@ namespace {
 using P = Vec2<double>;
 using Segment = BezierSegment<double>;
 
-const double kPi = pi<double>();
-
-std::string fmt(double x) {
-  std::ostringstream os;
-  os.precision(12);
-  os << x;
-  return os.str();
-}
+/// Numbers in messages and notes: 12 significant digits.
+std::string fmt(double x) { return io::format_number(x, 12); }
 
 // ---- affine maps ----------------------------------------------------------------------------------------
 
@@ -59,7 +55,7 @@ struct Affine {
   static Affine translate(double tx, double ty) { return {1, 0, 0, 1, tx, ty}; }
   static Affine scale(double sx, double sy) { return {sx, 0, 0, sy, 0, 0}; }
   static Affine rotate_deg(double deg) {
-    const double t = deg * kPi / 180;
+    const double t = deg_to_rad(deg);
     return {std::cos(t), std::sin(t), -std::sin(t), std::cos(t), 0, 0};
   }
 };
@@ -97,14 +93,13 @@ std::string trimmed(const std::string& s) {
   return first == std::string::npos ? "" : s.substr(first, last - first + 1);
 }
 
-/// Metres per unit of the absolute CSS units (CSS Values 3, 5.2: 1in = 2.54cm = 96px = 72pt = 6pc).
+/// Metres per unit of the absolute CSS units (CSS Values 3, 5.2: 1in = 2.54cm = 96px = 72pt = 6pc), from the
+/// units table (io/units.hpp); none for any other spelling.
 std::optional<double> metres_per(const std::string& unit) {
-  if (unit == "mm") return 1e-3;
-  if (unit == "cm") return 1e-2;
-  if (unit == "in") return 0.0254;
-  if (unit == "pt") return 0.0254 / 72;
-  if (unit == "pc") return 0.0254 / 6;
-  if (unit == "px") return 0.0254 / 96;
+  using io::LengthUnit;
+  for (LengthUnit u : {LengthUnit::Millimetre, LengthUnit::Centimetre, LengthUnit::Inch, LengthUnit::Point,
+                       LengthUnit::Pica, LengthUnit::Pixel})
+    if (unit == io::unit_label(u)) return io::metres_per(u);
   return std::nullopt;
 }
 
@@ -194,7 +189,7 @@ Affine transform_function(const std::string& name, const std::vector<double>& v,
   }
   if (name == "skewX" || name == "skewY") {
     need({1});
-    const double t = std::tan(v[0] * kPi / 180);
+    const double t = std::tan(deg_to_rad(v[0]));
     return name == "skewX" ? Affine{1, 0, t, 1, 0, 0} : Affine{1, t, 0, 1, 0, 0};
   }
   where.fail("transform=\"" + text + "\": unknown transform function \"" + name +
@@ -884,7 +879,7 @@ std::vector<SvgCorner> find_corners(const SvgShape& s, double corner_tolerance) 
   const std::size_t n = s.segments.size();
   const double gap = BezierPathOptions<double>{}.joint_tolerance * svg_detail::control_extent(s.segments);
   for (const PathCorner<double>& c : path_corners(s.segments, s.closed, gap, corner_tolerance))
-    out.push_back({c.piece, c.point, c.turn * 180 / kPi, "where " + s.origins[(c.piece + n - 1) % n] + " meets " + s.origins[c.piece]});
+    out.push_back({c.piece, c.point, rad_to_deg(c.turn), "where " + s.origins[(c.piece + n - 1) % n] + " meets " + s.origins[c.piece]});
   std::sort(out.begin(), out.end(), [](const SvgCorner& x, const SvgCorner& y) { return x.segment < y.segment; });
   return out;
 }

@@ -1,5 +1,6 @@
 // Bounded work (see include/rollkin/io/work_bound.hpp).
 #include "rollkin/io/work_bound.hpp"
+#include "rollkin/io/format.hpp"
 
 #include "rollkin/solve/continuation.hpp"
 
@@ -10,12 +11,6 @@
 namespace rollkin::io {
 namespace {
 
-std::string number_text(double v) {
-  std::ostringstream os;
-  os << std::setprecision(6) << v;
-  return os.str();
-}
-
 /// The number of values of a checked sweep, counted without making them (as sweep_values counts them).
 double value_count(const Sweep& s) { return std::floor((s.to - s.from) / s.step + 1e-9) + 1; }
 
@@ -23,7 +18,7 @@ double value_count(const Sweep& s) { return std::floor((s.to - s.from) / s.step 
 
 std::string max_steps_problem(double max_steps) {
   if (std::isfinite(max_steps) && max_steps >= 1) return "";
-  return "expects a finite number of continuation sub-steps, at least 1, got " + number_text(max_steps);
+  return "expects a finite number of continuation sub-steps, at least 1, got " + format_number(max_steps);
 }
 
 std::vector<double> bounded_inputs(const Scene& scene, const Sweep& sweep, double max_steps, const std::string& option) {
@@ -31,11 +26,11 @@ std::vector<double> bounded_inputs(const Scene& scene, const Sweep& sweep, doubl
   if (!bad_bound.empty()) throw std::invalid_argument(option + ": " + bad_bound);
   const std::string bad_sweep = check_sweep(sweep);
   if (!bad_sweep.empty()) throw std::invalid_argument(bad_sweep);
-  const std::string range = "the sweep of " + sweep.input + " from " + number_text(sweep.from) + " to " + number_text(sweep.to);
+  const std::string range = "the sweep of " + sweep.input + " from " + format_number(sweep.from) + " to " + format_number(sweep.to);
   const double values = value_count(sweep);
   if (values > max_steps) {
     std::ostringstream os;
-    os << range << " by " << number_text(sweep.step) << " has " << std::scientific << std::setprecision(2) << values
+    os << range << " by " << format_number(sweep.step) << " has " << std::scientific << std::setprecision(2) << values
        << " values, above the limit " << max_steps << " (" << option << "): each value is at least one continuation"
        << " sub-step; ask for a smaller range or a larger step (fewer values), or raise the limit with " << option;
     throw WorkLimitError(os.str());

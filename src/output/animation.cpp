@@ -5,6 +5,7 @@
 #include "rollkin/centrodes.hpp"
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/decimate.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/svg.hpp"
 #include "rollkin/io/units.hpp"
 
@@ -20,16 +21,11 @@
 namespace rollkin::output {
 namespace {
 
+/// A coordinate of the page's drawing: 7 significant digits.
+std::string coordinate(double v) { return io::format_number(v, 7); }
+
 const int kWidth = 900, kHeight = 640;  // px of the drawing
 const double kMargin = 30;              // px around the mechanism's extent
-
-/// A number with 7 significant digits (the compact table of the page), "null" when not finite (JSON).
-std::string num(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.7g", v);
-  return buf;
-}
 
 /// SVG path data through the points ("M x y x y ...": coordinates after a moveto are linetos; "Z" when
 /// closed); a non-finite point breaks the path, the next finite one starts a new piece.
@@ -42,7 +38,7 @@ std::string path_data(const std::vector<Eigen::Vector2d>& pts, bool closed) {
       broken = true;
       continue;
     }
-    d += (d.empty() ? "" : " ") + std::string(drawing ? "" : "M") + num(p.x()) + " " + num(p.y());
+    d += (d.empty() ? "" : " ") + std::string(drawing ? "" : "M") + coordinate(p.x()) + " " + coordinate(p.y());
     drawing = true;
   }
   if (closed && !broken && !d.empty()) d += " Z";
@@ -69,7 +65,7 @@ Eigen::Vector3d pose_columns(const SE2<double>& p) {
 /// "translate(x y) rotate(angle)" of a link pose: a point p of the link's frame at R p + t, angle in degrees.
 std::string transform_of(const SE2<double>& pose) {
   const Eigen::Vector3d c = pose_columns(pose);
-  return "translate(" + num(c.x()) + " " + num(c.y()) + ") rotate(" + num(c.z()) + ")";
+  return "translate(" + coordinate(c.x()) + " " + coordinate(c.y()) + ") rotate(" + coordinate(c.z()) + ")";
 }
 
 /// The frames of the page (io::pick_frames: every pose of a sweep of up to io::kAnimationFrames, else as many
@@ -319,14 +315,14 @@ std::string link_group(const Page& p, const LinkCentrodes& centrodes, std::size_
   if (!k.body.empty())
     svg += "<path class=\"body\" stroke=\"" + k.color + "\" stroke-width=\"2.4\" d=\"" + path_data(k.body, false) + "\"/>\n";
   for (const auto& j : k.joints)
-    svg += "<circle class=\"joint\" cx=\"" + num(j.x()) + "\" cy=\"" + num(j.y()) + "\" r=\"" + num(3.5 * p.px) +
+    svg += "<circle class=\"joint\" cx=\"" + coordinate(j.x()) + "\" cy=\"" + coordinate(j.y()) + "\" r=\"" + coordinate(3.5 * p.px) +
            "\" fill=\"#ffffff\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n";
   for (std::size_t j = 0; j < k.pivots.size(); ++j) {
     const Eigen::Vector2d& at = k.pivots[j];
     // The name upright in pixels: the text's own frame undoes the world's scale and y flip.
-    svg += "<rect x=\"" + num(at.x() - 5 * p.px) + "\" y=\"" + num(at.y() - 5 * p.px) + "\" width=\"" + num(10 * p.px) +
-           "\" height=\"" + num(10 * p.px) + "\" fill=\"#000000\"/>\n<text transform=\"translate(" + num(at.x()) + " " +
-           num(at.y()) + ") scale(" + num(p.px) + " " + num(-p.px) + ")\" x=\"7\" y=\"16\" font-size=\"12\">" +
+    svg += "<rect x=\"" + coordinate(at.x() - 5 * p.px) + "\" y=\"" + coordinate(at.y() - 5 * p.px) + "\" width=\"" + coordinate(10 * p.px) +
+           "\" height=\"" + coordinate(10 * p.px) + "\" fill=\"#000000\"/>\n<text transform=\"translate(" + coordinate(at.x()) + " " +
+           coordinate(at.y()) + ") scale(" + coordinate(p.px) + " " + coordinate(-p.px) + ")\" x=\"7\" y=\"16\" font-size=\"12\">" +
            io::xml_escape(k.pivot_names[j]) + "</text>\n";
   }
   return svg + "</g>\n";
@@ -337,8 +333,8 @@ std::string contact_markers(const Page& p) {
   std::string svg;
   for (std::size_t slot = 0; slot < p.contacts.size(); ++slot) {
     const Eigen::Vector2d at = p.shown ? p.f.contacts[p.start][slot] : Eigen::Vector2d::Zero();
-    svg += "<circle id=\"contact-" + std::to_string(slot) + "\" class=\"contact\" r=\"" + num(3.5 * p.px) +
-           "\" fill=\"#d62728\" transform=\"translate(" + num(at.x()) + " " + num(at.y()) + ")\"" +
+    svg += "<circle id=\"contact-" + std::to_string(slot) + "\" class=\"contact\" r=\"" + coordinate(3.5 * p.px) +
+           "\" fill=\"#d62728\" transform=\"translate(" + coordinate(at.x()) + " " + coordinate(at.y()) + ")\"" +
            (p.shown ? "" : " visibility=\"hidden\"") + "><title>contact " + io::xml_escape(p.m.pairs[p.contacts[slot]].name) +
            "</title></circle>\n";
   }
@@ -351,7 +347,7 @@ std::string drawing(const Page& p) {
   const std::string w = std::to_string(kWidth), h = std::to_string(kHeight);
   std::string svg = "<svg id=\"mechanism\" class=\"no-centrodes\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w +
                     " " + h + "\">\n<rect width=\"" + w + "\" height=\"" + h + "\" fill=\"#ffffff\"/>\n<g transform=\"matrix(" +
-                    num(p.scale) + " 0 0 " + num(-p.scale) + " " + fixed2(p.ox) + " " + fixed2(p.oy) + ")\">\n";
+                    coordinate(p.scale) + " 0 0 " + coordinate(-p.scale) + " " + fixed2(p.ox) + " " + fixed2(p.oy) + ")\">\n";
   svg += contact_paths(p);
   for (std::size_t l = 0; l < p.sketches.size(); ++l) svg += link_group(p, centrodes, l);
   svg += contact_markers(p);

@@ -1,5 +1,6 @@
 // The input grid of a sweep (see include/rollkin/solve/sweep_grid.hpp).
 #include "rollkin/solve/sweep_grid.hpp"
+#include "rollkin/io/format.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -18,12 +19,6 @@ using Wide = __int128;
 /// Largest magnitude a scaled integer may have: F + k S lies between F and the end T, two such numbers, far
 /// inside the 127 bits of Wide.
 const Wide kWideLimit = static_cast<Wide>(1000000000000000000LL) * 1000000000000000000LL;  // 1e36
-
-std::string number_text(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 /// A decimal number: mantissa * 10^exponent.
 struct Decimal {
@@ -142,14 +137,14 @@ std::string check_sweep(const Sweep& s) {
   if (!std::isfinite(s.from) || !std::isfinite(s.to) || !std::isfinite(s.step)) return "from, to and step must be finite numbers";
   if (s.step == 0) return "step must not be zero; expected a step with the sign of to - from";
   const double span = s.to - s.from;
-  const std::string from = number_text(s.from), to = number_text(s.to);
+  const std::string from = io::format_number(s.from), to = io::format_number(s.to);
   if (span != 0 && (span > 0) != (s.step > 0))
-    return "step " + number_text(s.step) + " has the wrong sign for a sweep from " + from + " to " + to +
+    return "step " + io::format_number(s.step) + " has the wrong sign for a sweep from " + from + " to " + to +
            "; expected a step with the sign of to - from";
   // The grid counts its values exactly (integers below 2^53); how many values a run may ask for is the
   // bounded-work rule's (io/work_bound.hpp: at most max_steps).
   if (span / s.step > 9e15)
-    return "the sweep from " + from + " to " + to + " by " + number_text(s.step) +
+    return "the sweep from " + from + " to " + to + " by " + io::format_number(s.step) +
            " has more than 9e15 values, more than a sweep can count; expected a larger step";
   return "";
 }

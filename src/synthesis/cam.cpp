@@ -3,6 +3,7 @@
 #include "rollkin/synthesis/cam.hpp"
 
 #include "rollkin/analysis.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -244,7 +245,7 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::si
   for (std::size_t k = 0; k < result.size(); ++k) {
     const double theta = spec.rotation * result.input(k);
     if (!result.has_pose(k)) {
-      rt.problems.push_back("no pose at cam angle " + io::fmt(io::from_radians(theta, spec.angle_unit)));
+      rt.problems.push_back("no pose at cam angle " + io::format_number(io::from_radians(theta, spec.angle_unit)));
       continue;
     }
     ++rt.solved;
@@ -270,7 +271,7 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::si
     }
   }
   for (const auto& l : result.limits)
-    rt.problems.push_back("the sweep stopped at cam angle " + io::fmt(io::from_radians(spec.rotation * l.limit_input, spec.angle_unit)) +
+    rt.problems.push_back("the sweep stopped at cam angle " + io::format_number(io::from_radians(spec.rotation * l.limit_input, spec.angle_unit)) +
                           ": " + l.detail);
   return rt;
 }

@@ -1,5 +1,6 @@
 // Reading a cam spec (docs/synthesis.md, "The cam spec"): a JSON object checked key by key, every problem an
 // InputError naming the spec file and the JSON path, what is wrong and what is expected.
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/point_file.hpp"
@@ -40,7 +41,7 @@ class CamSpecReader {
     spec.stroke = spec.law->stroke();
     if (!(spec.stroke > 0)) js_.fail("law", "the law never moves the follower (its stroke is 0)");
     const double relative = js_.number_or(root_, "", "tolerance", 1e-9, "the largest deviation allowed, as a fraction of the stroke");
-    if (!(relative > 0)) js_.fail("tolerance", "expected a fraction of the stroke > 0, got " + io::fmt(relative));
+    if (!(relative > 0)) js_.fail("tolerance", "expected a fraction of the stroke > 0, got " + io::format_number(relative));
     spec.tolerance = relative * spec.stroke;
     return spec;
   }
@@ -48,7 +49,7 @@ class CamSpecReader {
  private:
   double positive(const json& v, const std::string& path, const std::string& what) const {
     const double x = js_.number(v, path, what);
-    if (!(x > 0)) js_.fail(path, what + " must be > 0, got " + io::fmt(x));
+    if (!(x > 0)) js_.fail(path, what + " must be > 0, got " + io::format_number(x));
     return x;
   }
   double angle(const json& v, const std::string& path, const std::string& what, const CamSpec& spec) const {
@@ -133,8 +134,8 @@ class CamSpecReader {
       spec.offset = js_.number_or(f, "follower", "offset", 0, "the guide's offset from the cam centre (a length)");
       const double prime = spec.base_radius + spec.roller_radius;
       if (spec.contact == FollowerContact::Roller && !(std::abs(spec.offset) < prime))
-        js_.fail("follower.offset", "|offset| " + io::fmt(std::abs(spec.offset)) + " must be less than base_radius + roller_radius = " +
-                                        io::fmt(prime) + " (the roller could not touch the base circle)");
+        js_.fail("follower.offset", "|offset| " + io::format_number(std::abs(spec.offset)) + " must be less than base_radius + roller_radius = " +
+                                        io::format_number(prime) + " (the roller could not touch the base circle)");
     } else if (motion == "oscillating") {
       js_.object(f, "follower", {"motion", "pivot", "arm", "start_angle"});
       spec.motion = FollowerMotion::Oscillating;
@@ -162,7 +163,7 @@ class CamSpecReader {
     const double c = p > 0 ? (rho * rho - p * p - spec.arm * spec.arm) / (2 * spec.arm * p) : 2;
     if (!(std::abs(c) <= 1))
       js_.fail("follower", "no arm angle puts the roller's centre on the prime circle (radius base_radius + roller_radius = " +
-                               io::fmt(rho) + ") with this pivot and arm");
+                               io::format_number(rho) + ") with this pivot and arm");
     const double base = std::atan2(spec.pivot.y(), spec.pivot.x()), d = std::acos(c);
     const double toward = std::atan2(-spec.pivot.y(), -spec.pivot.x());
     auto gap = [&](double a) { return std::abs(std::remainder(a - toward, 2 * pi<double>())); };
@@ -181,13 +182,13 @@ class CamSpecReader {
     const double c = (rho * rho - p * p - spec.arm * spec.arm) / (2 * spec.arm * p);
     if (p > 0 && std::abs(c) <= 1) {
       const double base = std::atan2(spec.pivot.y(), spec.pivot.x()), d = std::acos(c);
-      hint = "; start_angle " + io::fmt(io::from_radians(base - d, spec.angle_unit)) + " or " +
-             io::fmt(io::from_radians(base + d, spec.angle_unit)) + " puts it there";
+      hint = "; start_angle " + io::format_number(io::from_radians(base - d, spec.angle_unit)) + " or " +
+             io::format_number(io::from_radians(base + d, spec.angle_unit)) + " puts it there";
     } else {
       hint = "; no start angle puts it there with this pivot and arm";
     }
-    js_.fail("follower.start_angle", "the roller's centre is " + io::fmt(at) + " from the cam centre, not base_radius + roller_radius = " +
-                                         io::fmt(rho) + hint);
+    js_.fail("follower.start_angle", "the roller's centre is " + io::format_number(at) + " from the cam centre, not base_radius + roller_radius = " +
+                                         io::format_number(rho) + hint);
   }
 
   void read_law(CamSpec& spec) {
@@ -215,7 +216,7 @@ class CamSpecReader {
           js_.fail(io::child(path, "kind"), e.what());
         }
         const double lift = js_.number_or(law[k], path, "lift", 0, "the segment's lift (negative for a return)") * lift_unit;
-        if (!(to > start)) js_.fail(io::child(path, "to"), "expected a cam angle after the segment's start " + io::fmt(io::from_radians(start, spec.angle_unit)));
+        if (!(to > start)) js_.fail(io::child(path, "to"), "expected a cam angle after the segment's start " + io::format_number(io::from_radians(start, spec.angle_unit)));
         if (kind == RiseKind::Dwell && lift != 0) js_.fail(io::child(path, "lift"), "a dwell has no lift");
         if (kind != RiseKind::Dwell && lift == 0) js_.fail(path, "a \"" + kind_name + "\" segment needs a nonzero \"lift\"");
         segments.push_back({start, to, lift, kind});

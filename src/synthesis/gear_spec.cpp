@@ -1,5 +1,6 @@
 // Reading a gear spec (docs/synthesis.md, "The gear spec"): every problem an InputError naming the spec file and
 // the JSON path.
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/point_file.hpp"
@@ -38,7 +39,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
   }
   spec.centre_distance = js.number(js.require(root, "", "centre_distance", "the distance of the pivots (> 0)"),
                                    "centre_distance", "a length");
-  if (!(spec.centre_distance > 0)) js.fail("centre_distance", "expected a distance > 0, got " + io::fmt(spec.centre_distance));
+  if (!(spec.centre_distance > 0)) js.fail("centre_distance", "expected a distance > 0, got " + io::format_number(spec.centre_distance));
   const json& t = js.require(root, "", "transmission",
                              "{\"kind\": \"elliptical\", \"eccentricity\": e}, {\"kind\": \"sinusoidal\", \"k\": k} or {\"file\": \"f.txt\"}");
   if (io::JsonAccess::get(t, "file")) {
@@ -63,7 +64,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     if (std::abs(p.back() - p.front() - turn) > 1e-12 * turn)
       throw InputError(file.string(), "line " + std::to_string(rows.lines.back()),
                        "the table must cover one turn of phi1, its last row at the first phi1 + " +
-                           io::fmt(io::from_radians(turn, spec.angle_unit)));
+                           io::format_number(io::from_radians(turn, spec.angle_unit)));
     spec.closure_error = g.back() - g.front();  // f(p + 2 pi) - f(p) - 2 pi
     g.back() = g.front();                       // the spline of g is periodic; the closure is reported
     try {
@@ -79,17 +80,17 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
       js.object(t, "transmission", {"kind", "eccentricity"});
       spec.parameter = js.number(js.require(t, "transmission", "eccentricity", "the ellipses' eccentricity in [0, 1)"),
                                  "transmission.eccentricity", "a number in [0, 1)");
-      if (!(spec.parameter >= 0 && spec.parameter < 1)) js.fail("transmission.eccentricity", "expected a number in [0, 1), got " + io::fmt(spec.parameter));
+      if (!(spec.parameter >= 0 && spec.parameter < 1)) js.fail("transmission.eccentricity", "expected a number in [0, 1), got " + io::format_number(spec.parameter));
     } else if (kind == "sinusoidal") {
       js.object(t, "transmission", {"kind", "k"});
       spec.parameter = js.number(js.require(t, "transmission", "k", "the amplitude k, |k| < 1"), "transmission.k", "a number");
-      if (!(std::abs(spec.parameter) < 1)) js.fail("transmission.k", "expected |k| < 1 (f' = 1 + k cos p > 0), got " + io::fmt(spec.parameter));
+      if (!(std::abs(spec.parameter) < 1)) js.fail("transmission.k", "expected |k| < 1 (f' = 1 + k cos p > 0), got " + io::format_number(spec.parameter));
     } else {
       js.fail("transmission.kind", "unknown kind \"" + kind + "\"; expected \"elliptical\" or \"sinusoidal\" (or give \"file\")");
     }
   }
   const double relative = js.number_or(root, "", "tolerance", 1e-9, "the largest deviation of gear 2's angle, as a fraction of a turn");
-  if (!(relative > 0)) js.fail("tolerance", "expected a number > 0, got " + io::fmt(relative));
+  if (!(relative > 0)) js.fail("tolerance", "expected a number > 0, got " + io::format_number(relative));
   spec.tolerance = relative * 2 * pi<double>();
   return spec;
 }

@@ -1,5 +1,6 @@
 // Non-circular gear pairs: pitch curves sampled to a tolerance, the scene that rolls them, the round trip
 // (include/rollkin/synthesis/gears.hpp; docs/synthesis.md, "Non-circular gears").
+#include "rollkin/io/format.hpp"
 #include "rollkin/synthesis/gears.hpp"
 
 #include "rollkin/io/scene.hpp"
@@ -168,7 +169,7 @@ GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene) {
     }
   }
   for (const auto& l : result.limits)
-    rt.problems.push_back("the sweep stopped at gear1.phi = " + io::fmt(io::from_radians(l.limit_input, spec.angle_unit)) + ": " + l.detail);
+    rt.problems.push_back("the sweep stopped at gear1.phi = " + io::format_number(io::from_radians(l.limit_input, spec.angle_unit)) + ": " + l.detail);
   if (rt.solved < rt.poses) rt.problems.push_back(std::to_string(rt.poses - rt.solved) + " poses not solved");
   return rt;
 }

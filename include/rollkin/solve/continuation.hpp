@@ -169,12 +169,20 @@ template <class S> class Tracer {
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
   /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
   /// (on a grid too coarse to interpolate, no stride is tried and undone).
-  void update_span(const S& largest, bool prediction_met) {
+  /// `end_residual` is the residual of the stride's end, solved: the round-off level of the residual at these
+  /// poses, which grows with the number of rows and the size of their terms (trains of many rolling disks).
+  /// Interpolated poses within twice it show no error of the cubic at all, only round-off, and
+  /// aiming that at 8 epsilon would shrink the span at every stride until nothing is interpolated: the span
+  /// doubles instead, as when the prediction met the tolerance. Every interpolated pose is still verified
+  /// (interpolation_verified), so the span decides the cost only, never what is reported.
+  void update_span(const S& largest, bool prediction_met, const S& end_residual) {
     using std::abs;
     using std::min;
     using std::sqrt;
     const S target = S(8) * epsilon<S>();
-    const S growth = largest > S(0) ? S(S(9) / S(10) * sqrt(sqrt(S(target / largest)))) : S(prediction_met ? 2 : 1);
+    S growth(prediction_met ? 2 : 1);
+    if (largest > S(0))
+      growth = largest <= S(2) * end_residual ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
     span_ = min(S(abs(q_(var_) - q_prev_(var_)) * min(growth, S(2))), max_step_);
   }
 
@@ -564,7 +572,7 @@ std::size_t interpolate_stride(Tracer<S>& tracer, const std::vector<S>& inputs, 
     }
     out.set_interpolated_pose(side[j], tracer.interpolated_pose(), tracer.interpolated_report());
   }
-  tracer.update_span(largest, rep.iterations == 0);
+  tracer.update_span(largest, rep.iterations == 0, rep.residual);
   out.set_pose(side[end], tracer.q(), tracer.v(), rep);
   return end + 1 - k;
 }
@@ -650,14 +658,17 @@ template <class S> SweepSummary<S> sweep_summary(const Mechanism<S>& m, SolveDat
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_double.cpp (docs/benchmark.md, "Build times").
-extern template double estimate_substeps(const Mechanism<double>&, const VectorX<double>&, int, const std::vector<double>&,
-                                         const ContinuationSettings<double>&);
-extern template SweepResult<double> sweep(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
-                                          const SolveReport<double>&, int, const std::vector<double>&,
-                                          const ContinuationSettings<double>&);
-extern template SweepSummary<double> sweep_summary(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&,
-                                                   const SolveReport<double>&, int, const std::vector<double>&,
-                                                   const ContinuationSettings<double>&);
+// The sweeps for one scalar S, after KEYWORD (`extern template` or `template`; ROLLKIN_POSITION_INSTANCES,
+// docs/benchmark.md, "Build times").
+#define ROLLKIN_CONTINUATION_INSTANCES(KEYWORD, S)                                                            \
+  KEYWORD S estimate_substeps(const Mechanism<S>&, const VectorX<S>&, int, const std::vector<S>&,               \
+                              const ContinuationSettings<S>&);                                                  \
+  KEYWORD SweepResult<S> sweep(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&, const SolveReport<S>&, int, \
+                               const std::vector<S>&, const ContinuationSettings<S>&);                          \
+  KEYWORD SweepSummary<S> sweep_summary(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&, const SolveReport<S>&, \
+                                        int, const std::vector<S>&, const ContinuationSettings<S>&);
+
+// Compiled once for double, in src/solve/instantiate_double.cpp.
+ROLLKIN_CONTINUATION_INSTANCES(extern template, double)
 
 }  // namespace rollkin

@@ -265,8 +265,12 @@ template <class S> SweepInterference check_interference(const Mechanism<S>& m, c
   return out;
 }
 
-// Compiled once for double, in src/solve/instantiate_analysis_double.cpp (docs/benchmark.md, "Build times").
-extern template SweepInterference check_interference(const Mechanism<double>&, const SweepResult<double>&,
-                                                     const InterferenceCheck&);
+// The interference check for one scalar S, after KEYWORD (`extern template` or `template`;
+// ROLLKIN_POSITION_INSTANCES, docs/benchmark.md, "Build times").
+#define ROLLKIN_INTERFERENCE_INSTANCES(KEYWORD, S) \
+  KEYWORD SweepInterference check_interference(const Mechanism<S>&, const SweepResult<S>&, const InterferenceCheck&);
+
+// Compiled once for double, in src/solve/instantiate_analysis_double.cpp.
+ROLLKIN_INTERFERENCE_INSTANCES(extern template, double)
 
 }  // namespace rollkin

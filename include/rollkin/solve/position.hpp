@@ -219,14 +219,18 @@ template <class S> SolveReport<S> assemble(const Mechanism<S>& m, VectorX<S>& q,
   return rep;
 }
 
-// Compiled once for double, in src/solve/instantiate_double.cpp (Pinocchio's way: a translation unit that calls
-// these for double only parses them; docs/benchmark.md, "Build times").
-extern template SolveReport<double> solve_position(const Mechanism<double>&, VectorX<double>&, SolveData<double>&, int);
-extern template void solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&, VectorX<double>&);
-extern template VectorX<double> solve_velocity(const Mechanism<double>&, SolveData<double>&, const VectorX<double>&);
-extern template VectorX<double> solve_acceleration(const Mechanism<double>&, const VectorX<double>&, SolveData<double>&,
-                                                   const VectorX<double>&, const VectorX<double>&);
-extern template SolveReport<double> assemble(const Mechanism<double>&, VectorX<double>&, SolveData<double>&,
-                                             const std::vector<int>&);
+// The entry points of this header for one scalar S, after KEYWORD: `extern template` declares them compiled
+// elsewhere, `template` compiles them (Pinocchio's way: a translation unit that calls them only parses them;
+// docs/benchmark.md, "Build times"). One list for every scalar and both uses.
+#define ROLLKIN_POSITION_INSTANCES(KEYWORD, S)                                                                   \
+  KEYWORD SolveReport<S> solve_position(const Mechanism<S>&, VectorX<S>&, SolveData<S>&, int);                  \
+  KEYWORD void solve_velocity(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&, VectorX<S>&);              \
+  KEYWORD VectorX<S> solve_velocity(const Mechanism<S>&, SolveData<S>&, const VectorX<S>&);                     \
+  KEYWORD VectorX<S> solve_acceleration(const Mechanism<S>&, const VectorX<S>&, SolveData<S>&, const VectorX<S>&, \
+                                        const VectorX<S>&);                                                     \
+  KEYWORD SolveReport<S> assemble(const Mechanism<S>&, VectorX<S>&, SolveData<S>&, const std::vector<int>&);
+
+// Compiled once for double, in src/solve/instantiate_double.cpp.
+ROLLKIN_POSITION_INSTANCES(extern template, double)
 
 }  // namespace rollkin

@@ -296,29 +296,36 @@ template <class S> struct SolveData {
 
   /// Sparse LU of the independent rows among the first `rows` (chosen at the first pose, again after a
   /// pose where their LU failed while the system had rank n, see factor()). False when the dense decomposition must do
-  /// this pose.
+  /// this pose, and always for a scalar without a sparse back end (NoSparseFactors: resolve() never gives
+  /// it a sparse method, and the body below is compiled for double only).
   bool factor_sparse(int rows) {
-    const auto n = static_cast<int>(unknowns.size());
-    if (rows < n) return false;
-    if (!sparse_lu.ready() || selected_for_rows_ != rows) {
-      std::vector<int> selected(static_cast<std::size_t>(rows));
-      for (int r = 0; r < rows; ++r) selected[static_cast<std::size_t>(r)] = r;
-      if (rows > n) selected = independent_rows(scaled_sparse_jacobian(rows));
-      if (static_cast<int>(selected.size()) < n) return false;  // rank deficient here: the COD's minimum-norm step
-      sparse_lu.setup(kin.pattern, unknown_of_variable_, selected, row_weight, col_scale, method);
-      selected_for_rows_ = rows;
+    if constexpr (!sparse_factorisation_available<S>) {
+      static_cast<void>(rows);
+      return false;
+    } else {
+      const auto n = static_cast<int>(unknowns.size());
+      if (rows < n) return false;
+      if (!sparse_lu.ready() || selected_for_rows_ != rows) {
+        std::vector<int> selected(static_cast<std::size_t>(rows));
+        for (int r = 0; r < rows; ++r) selected[static_cast<std::size_t>(r)] = r;
+        if (rows > n) selected = independent_rows(scaled_sparse_jacobian(rows));
+        // Rank deficient here: the COD's minimum-norm step.
+        if (static_cast<int>(selected.size()) < n) return false;
+        sparse_lu.setup(kin.pattern, unknown_of_variable_, selected, row_weight, col_scale, method);
+        selected_for_rows_ = rows;
+      }
+      const bool ok = sparse_lu.factor(kin.jacobian_values);
+      const double largest = sparse_lu.largest_pivot(), smallest = sparse_lu.smallest_pivot();
+      const double singular_condition = 1 / (epsilon<double>() * n);
+      const double estimate = ok ? std::max(largest / smallest, sparse_lu.condition_estimate()) : 0.0;
+      if (!ok || !(estimate < singular_condition)) {
+        return false;  // singular here: the COD takes this pose (factor() chooses the rows again if it has rank n)
+      }
+      sparse_active = true;
+      rank = n;
+      condition = estimate;
+      return true;
     }
-    const bool ok = sparse_lu.factor(kin.jacobian_values);
-    const double largest = sparse_lu.largest_pivot(), smallest = sparse_lu.smallest_pivot();
-    const double singular_condition = 1 / (epsilon<double>() * n);
-    const double estimate = ok ? std::max(largest / smallest, sparse_lu.condition_estimate()) : 0.0;
-    if (!ok || !(estimate < singular_condition)) {
-      return false;  // singular here: the COD takes this pose (factor() chooses the rows again if it has rank n)
-    }
-    sparse_active = true;
-    rank = n;
-    condition = estimate;
-    return true;
   }
 
   /// The first `rows` rows of the scaled Jacobian of the unknowns as a sparse matrix (from kin's nonzeros).

@@ -14,7 +14,7 @@ BezierSegment<double> read_segment(const json& seg, const std::string& sp, const
     js.array(*w, child(sp, "weights"), "one weight per control point", s.points.size());
     for (std::size_t k = 0; k < w->size(); ++k) {
       const double x = js.number((*w)[k], index(child(sp, "weights"), k), "a weight");
-      if (!(x > 0)) js.fail(index(child(sp, "weights"), k), "expected a positive weight, got " + fmt(x));
+      if (!(x > 0)) js.fail(index(child(sp, "weights"), k), "expected a positive weight, got " + format_number(x));
       s.weights.push_back(x);
     }
   }

@@ -65,14 +65,14 @@ ArcLengthMethod ContourContext::arc_length_method(const json& v, const std::stri
     const double n = js.number(*o, child(path, "order"), "the rule's order");
     const bool gl = am.rule.kind == Quadrature::GaussLegendre;
     if (n != std::floor(n) || (gl && (n < 1 || n > 64)) || (!gl && n != 2 && n != 4))
-      js.fail(child(path, "order"), gl ? "expected a Gauss-Legendre order: an integer from 1 to 64, got " + fmt(n)
-                                       : "expected a Newton-Cotes degree: 2 (Simpson) or 4 (Boole), got " + fmt(n));
+      js.fail(child(path, "order"), gl ? "expected a Gauss-Legendre order: an integer from 1 to 64, got " + format_number(n)
+                                       : "expected a Newton-Cotes degree: 2 (Simpson) or 4 (Boole), got " + format_number(n));
     am.rule.order = static_cast<int>(n);
   }
   if (const json* p = js.get(v, "panels")) {
     const double n = js.number(*p, child(path, "panels"), "the number of panels");
     if (n != std::floor(n) || n < 1 || n > 100000)
-      js.fail(child(path, "panels"), "expected an integer number of panels from 1 to 100000, got " + fmt(n));
+      js.fail(child(path, "panels"), "expected an integer number of panels from 1 to 100000, got " + format_number(n));
     am.rule.panels = static_cast<int>(n);
   }
   return am;
@@ -92,7 +92,7 @@ ProfileShape<double> ContourContext::parameterised(ProfileShape<double> shape, c
 
 double ContourContext::scale(const json& c, const std::string& path) const {
   const double s = js.number_or(c, path, "scale", 1.0, "a scale factor");
-  if (!(s > 0) || !std::isfinite(s)) js.fail(child(path, "scale"), "expected a positive finite scale factor, got " + fmt(s));
+  if (!(s > 0) || !std::isfinite(s)) js.fail(child(path, "scale"), "expected a positive finite scale factor, got " + format_number(s));
   return s;
 }
 
@@ -173,8 +173,8 @@ std::vector<std::string> describe_joints(const BezierPath<double>& path, const J
   std::vector<bool> corner_at(n, false);  // by piece: one pass, not a search of corners() per joint
   for (const PathCorner<double>& c : path.corners()) {
     corner_at[c.piece] = true;
-    labels.push_back(describe(c.piece) + ", turning " + fmt(rad_to_deg(c.turn)) + " deg");
-    ctx.note(what + ": corner " + labels.back() + " at (" + fmt(c.point.x()) + ", " + fmt(c.point.y()) +
+    labels.push_back(describe(c.piece) + ", turning " + format_number(rad_to_deg(c.turn)) + " deg");
+    ctx.note(what + ": corner " + labels.back() + " at (" + format_number(c.point.x()) + ", " + format_number(c.point.y()) +
              "): a contact stops there (status corner)");
   }
   // Tangent joints (not corners) where the signed curvature kappa = (p' x p'') / |p'|^3 jumps.
@@ -187,7 +187,7 @@ std::vector<std::string> describe_joints(const BezierPath<double>& path, const J
     const double kr = contour_point(path.segment_jet(next, 0.0, 2), 2).curvature();
     if (!std::isfinite(kl) || !std::isfinite(kr)) continue;  // a stationary end: no curvature there
     if (std::abs(kl - kr) * extent > 1e-9 * (1 + (std::abs(kl) + std::abs(kr)) * extent))
-      ctx.note(what + ": curvature jumps from " + fmt(kl) + " to " + fmt(kr) + " (1/length) at " + describe(next) +
+      ctx.note(what + ": curvature jumps from " + format_number(kl) + " to " + format_number(kr) + " (1/length) at " + describe(next) +
                " (tangent continuous: a contact rolls through)");
   }
   return labels;

@@ -88,8 +88,8 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
       dxf.unit.empty() ? "no drawing unit ($INSUNITS 0 or absent): numbers as they are"
       : ctx.length_unit() == LengthUnit::Unitless
           ? "the scene has no units.length: numbers as they are"
-          : "converted " + dxf.unit + " -> " + unit_label(ctx.length_unit()) + " (x " + fmt(unit) + ")";
-  ctx.note(dxf.description + "; " + conversion + ", then scale " + fmt(scale) + ": coordinates x " + fmt(factor));
+          : "converted " + dxf.unit + " -> " + unit_label(ctx.length_unit()) + " (x " + format_number(unit) + ")";
+  ctx.note(dxf.description + "; " + conversion + ", then scale " + format_number(scale) + ": coordinates x " + format_number(factor));
   const std::vector<std::size_t> first = join_straight_runs(dxf.segments);
   std::optional<BezierPath<double>> bezier;
   try {
@@ -101,7 +101,7 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
                                    : ctx.material(c, path, std::nullopt, "left");
   std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
     const Vec2<double>& p = joint_points[first[piece]];
-    return "entity " + dxf.joint_entities[first[piece]] + " at (" + fmt(p.x()) + ", " + fmt(p.y()) + ") " + drawing_unit + " in " + file;
+    return "entity " + dxf.joint_entities[first[piece]] + " at (" + format_number(p.x()) + ", " + format_number(p.y()) + ") " + drawing_unit + " in " + file;
   }, "dxf " + what, ctx);
   return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }

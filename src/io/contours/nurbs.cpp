@@ -35,7 +35,7 @@ ContourShape read_nurbs_contour(const json& c, const std::string& path, const Co
   Nurbs<double> n;
   const double degree = js.number(js.require(c, path, "degree", "the NURBS degree"), child(path, "degree"), "the degree");
   if (degree != std::floor(degree) || degree < 1 || degree > 32)
-    js.fail(child(path, "degree"), "expected an integer degree from 1 to 32, got " + fmt(degree));
+    js.fail(child(path, "degree"), "expected an integer degree from 1 to 32, got " + format_number(degree));
   n.degree = static_cast<int>(degree);
   n.knots = numbers(js.require(c, path, "knots", "the knot vector"), child(path, "knots"), "knots", js);
   n.points = js.points(js.require(c, path, "points", "the control points"), child(path, "points"));
@@ -57,7 +57,7 @@ ContourShape read_nurbs_contour(const json& c, const std::string& path, const Co
   const bool reversed = pieces.closed ? ctx.material(c, path, signed_area(control_polygon(pieces.segments)) > 0, "inside")
                                       : ctx.material(c, path, std::nullopt, "left");
   std::vector<std::string> corners = describe_joints(*bezier, [&](std::size_t piece) {
-    return "NURBS knot u = " + fmt(pieces.breaks[piece]) + " (" + child(path, "knots") + ")";
+    return "NURBS knot u = " + format_number(pieces.breaks[piece]) + " (" + child(path, "knots") + ")";
   }, "nurbs " + path, ctx);
   return {ctx.parameterised(std::move(*bezier), c, path), reversed, std::move(corners)};
 }

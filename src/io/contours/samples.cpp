@@ -19,7 +19,7 @@ ContourShape read_samples_contour(const json& c, const std::string& path, const 
   const bool closed = js.get(c, "closed") ? js.boolean(c["closed"], child(path, "closed"), "whether the contour is closed") : false;
   const double scale = ctx.scale(c, path);
   const double smoothing = js.number_or(c, path, "smoothing", 0.0, "a smoothing tolerance");
-  if (smoothing < 0) js.fail(child(path, "smoothing"), "expected a smoothing tolerance >= 0, got " + fmt(smoothing));
+  if (smoothing < 0) js.fail(child(path, "smoothing"), "expected a smoothing tolerance >= 0, got " + format_number(smoothing));
   const json* f = js.get(c, "file");
   const json* p = js.get(c, "points");
   if ((f != nullptr) == (p != nullptr))
