@@ -1,15 +1,18 @@
 // Loading is linear in the input's size, n log n at most (docs/reliability.md, "Input files are regular files,
-// read in time linear in their size"): a scene whose contour is 4n long loads in a bounded multiple of the
-// time of one n long, for every contour reader. Before, a 16,000-point NURBS or
-// DXF SPLINE took 11.6 CPU s (knot insertion over the whole control polygon for every knot, multiplicities
-// counted over the whole knot vector) and an SVG element under 10^5 nested groups 26 CPU s (a location text,
-// counting lines from the file's start, built for every ancestor): 16 times the cost for 4 times the input.
+// read in time linear in their size"): a scene whose input is 4n long loads in at most 5 times the time of
+// one n long, for every reader: point files, SVG path data (smooth and all corners), SVG nested groups, DXF
+// LWPOLYLINE, SPLINE and chains of LINE entities, inline NURBS, and the scene's JSON itself (links and pairs).
+// Before, a 16,000-point NURBS or DXF SPLINE took 11.6 CPU s (knot insertion over the whole control polygon
+// for every knot, multiplicities counted over the whole knot vector), an SVG element under 10^5 nested groups
+// 26 CPU s (a location text, counting lines from the file's start, built for every ancestor), and a scene of
+// 10^4 four-bar loops 6.8 s (links and pairs looked up by name in lists, the spanning tree scanning every
+// pair for every link): 16 times the cost for 4 times the input.
 //
-// The cost is the thread's CPU time, the least of five loads (other processes only ever add to it), and
-// only a ratio within one run is asserted, never a time. Timed, not counted, the ratio gets a generous bound:
-// 8. A linear load costs 4 times for 4 times the input (4.3 to 5.1 measured here: allocation, page faults and
-// caches grow with the input), a point file's 5.6 (its validation uses CGAL's box intersection,
-// n log^2 n: 5.1 for n = 50,000); a quadratic load costs 16 times, as the old readers did.
+// The cost is the thread's CPU time, the least of seven loads, the small and the large input in turn (other
+// processes only ever add to it), and only a ratio within one run is asserted, never a time. A linear load
+// costs 4 times for 4 times the input, an n log n one 4.5 (n = 4000: 4 (1 + log 4 / log n)); allocation,
+// page faults and caches add a little; a quadratic load costs 16 times. A ratio above 5 is measured again,
+// up to three times in all, and the least one counts: noise does not repeat, a superlinear reader does.
 #define BOOST_TEST_MODULE io_load_complexity
 #include <boost/test/unit_test.hpp>
 
@@ -17,8 +20,10 @@
 
 #include "rollkin/io/scene.hpp"
 
+#include <malloc.h>
 #include <time.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -34,14 +39,19 @@ double thread_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-/// The least CPU time of five loads of the scene text.
-double load_cost(const std::string& scene, const fs::path& scene_file) {
-  double best = INFINITY;
-  for (int k = 0; k < 5; ++k) {
-    const double t0 = thread_cpu_seconds();
-    rollkin::io::parse_scene(scene, scene_file.string());
-    best = std::min(best, thread_cpu_seconds() - t0);
-  }
+/// The least CPU time of `loads` loads of each scene text, loaded in turn: {small, large}.
+std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const fs::path& scene_file, int loads) {
+  // Memory freed by one load stays in the heap for the next (no trimming, no mmap per large block): the
+  // kernel's page faults on fresh memory are not counted in each load again.
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  std::array<double, 2> best{INFINITY, INFINITY};
+  for (int k = 0; k < loads; ++k)
+    for (std::size_t which = 0; which < 2; ++which) {
+      const double t0 = thread_cpu_seconds();
+      rollkin::io::parse_scene(scenes[which], scene_file.string());
+      best[which] = std::min(best[which], thread_cpu_seconds() - t0);
+    }
   return best;
 }
 
@@ -58,15 +68,20 @@ std::string number(double x) {
   return buf;
 }
 
-/// Loads the scene made by make(n) and make(4 n) and checks the cost ratio (see the comment at the top).
+/// Loads the scenes made by make(n) and make(4 n) and checks the cost ratio (see the comment at the top).
 void check_linear(const std::string& what, std::size_t n, const std::function<std::string(std::size_t)>& make) {
-  const double bound = 8;
+  const double bound = 5;
   const fs::path scene_file = rollkin::testing::scratch_dir("io_load_complexity") / "scene.json";
-  const std::string small = make(n), large = make(4 * n);
-  const double t1 = load_cost(small, scene_file), t4 = load_cost(large, scene_file);
-  BOOST_TEST_MESSAGE(what << ": n = " << n << " loads in " << t1 << " s, 4n in " << t4 << " s: ratio " << t4 / t1);
-  BOOST_TEST(t4 <= bound * t1, what << ": 4 times the input costs " << t4 / t1 << " times the CPU time (n = " << n
-                                    << ": " << t1 << " s, 4n: " << t4 << " s); at most " << bound << " expected");
+  const std::array<std::string, 2> scenes{make(n), make(4 * n)};
+  double ratio = INFINITY;
+  std::array<double, 2> least{};
+  for (int attempt = 0; attempt < 3 && ratio > bound; ++attempt) {
+    const std::array<double, 2> t = load_costs(scenes, scene_file, 7);
+    if (t[1] / t[0] < ratio) ratio = t[1] / t[0], least = t;
+  }
+  BOOST_TEST_MESSAGE(what << ": n = " << n << " loads in " << least[0] << " s, 4n in " << least[1] << " s: ratio " << ratio);
+  BOOST_TEST(ratio <= bound, what << ": 4 times the input costs " << ratio << " times the CPU time (n = " << n << ": "
+                                  << least[0] << " s, 4n: " << least[1] << " s); at most " << bound << " expected");
 }
 
 /// n control points on a spiral, as a list of [x, y] (JSON) or the DXF groups 10/20/30.
@@ -139,12 +154,63 @@ std::string zigzag_path(std::size_t segments) {
                    "<svg xmlns=\"http://www.w3.org/2000/svg\"><path id=\"p\" d=\"" + d + "\"/></svg>\n");
 }
 
+/// n samples on an open elliptic arc (0 to 1.9 pi). The curve, not the spiral: its segments shrink as n grows,
+/// so the segments whose bounding boxes meet (the candidates of the validation's crossing test, which decides
+/// each one) stay a few per segment. On the spiral the turns stay 2 pi apart while its samples spread, and the
+/// candidates per segment grow with n: a property of that input, not of the reader.
 std::string point_file(std::size_t n) {
   const fs::path file = rollkin::testing::scratch_dir("io_load_complexity") / ("points_" + std::to_string(n) + ".txt");
   std::ostringstream text;
-  for (std::size_t i = 0; i < n; ++i) text << number(spiral(i).x()) << " " << number(spiral(i).y()) << "\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = 1.9 * M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
+    text << number(100 * std::cos(t)) << " " << number(60 * std::sin(t)) << "\n";
+  }
   rollkin::testing::write_text(file, text.str());
   return scene_with(R"({"name": "c", "type": "samples", "file": ")" + file.filename().string() + R"("})");
+}
+
+/// A DXF file of ENTITIES `entities` (group lines) on layer CAM; the scene reads the layer.
+std::string dxf_scene(const std::string& name, const std::string& entities) {
+  const fs::path file = rollkin::testing::scratch_dir("io_load_complexity") / name;
+  rollkin::testing::write_text(file, "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n");
+  return scene_with(R"({"name": "c", "type": "dxf", "file": ")" + name + R"(", "layer": "CAM"})");
+}
+
+/// One LWPOLYLINE of n vertices on the spiral, every other segment a bulge arc (bulge 0.01).
+std::string dxf_lwpolyline(std::size_t n) {
+  std::ostringstream d;
+  d << "0\nLWPOLYLINE\n5\n2F\n8\nCAM\n100\nAcDbPolyline\n90\n" << n << "\n70\n0\n";
+  for (std::size_t i = 0; i < n; ++i)
+    d << "10\n" << number(spiral(i).x()) << "\n20\n" << number(spiral(i).y()) << "\n42\n" << (i % 2 ? "0.01" : "0") << "\n";
+  return dxf_scene("lwpolyline_" + std::to_string(n) + ".dxf", d.str());
+}
+
+/// n LINE entities joining the spiral's points, in order along the chain (as a DXF contour's entities are listed).
+std::string dxf_lines(std::size_t n) {
+  std::ostringstream d;
+  for (std::size_t i = 0; i < n; ++i)
+    d << "0\nLINE\n5\n" << std::hex << (0x100 + i) << std::dec << "\n8\nCAM\n10\n" << number(spiral(i).x()) << "\n20\n"
+      << number(spiral(i).y()) << "\n30\n0\n11\n" << number(spiral(i + 1).x()) << "\n21\n" << number(spiral(i + 1).y())
+      << "\n31\n0\n";
+  return dxf_scene("lines_" + std::to_string(n) + ".dxf", d.str());
+}
+
+/// A scene of n four-bar loops sharing the ground and the crank (2 n + 2 links, 3 n + 1 revolutes).
+std::string four_bar_ladder(std::size_t n) {
+  std::ostringstream links, pairs;
+  links << R"({"name": "ground", "ground": true}, {"name": "crank"})";
+  pairs << R"({"name": "O", "type": "revolute", "links": ["ground", "crank"], "variable": "phi", "value": 60})";
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string k = std::to_string(i);
+    links << R"(, {"name": "coupler)" << k << R"("}, {"name": "rocker)" << k << R"("})";
+    pairs << R"(, {"name": "A)" << k << R"(", "type": "revolute", "links": ["crank", "coupler)" << k
+          << R"("], "at": [{"x": 1}, {}], "variable": "a", "value": 0})"
+          << R"(, {"name": "B)" << k << R"(", "type": "revolute", "links": ["coupler)" << k << R"(", "rocker)" << k
+          << R"("], "at": [{"x": 3}, {"x": 3}], "variable": "b", "value": 90})"
+          << R"(, {"name": "P)" << k << R"(", "type": "revolute", "links": ["ground", "rocker)" << k << R"("], "at": [{"x": )"
+          << number(3 + 1e-5 * static_cast<double>(i)) << R"(}, {}], "variable": "p", "value": 90})";
+  }
+  return R"({"links": [)" + links.str() + R"(], "pairs": [)" + pairs.str() + R"(], "inputs": ["O.phi"]})";
 }
 
 }  // namespace
@@ -157,8 +223,14 @@ BOOST_AUTO_TEST_CASE(an_svg_element_under_deeply_nested_groups_loads_in_linear_t
   check_linear("SVG groups nested", 20000, nested_groups);
 }
 
-BOOST_AUTO_TEST_CASE(a_long_svg_path_loads_in_linear_time) { check_linear("SVG path", 10000, long_path); }
+BOOST_AUTO_TEST_CASE(a_long_svg_path_loads_in_linear_time) { check_linear("SVG path", 2500, long_path); }
 
-BOOST_AUTO_TEST_CASE(a_path_of_corners_loads_in_linear_time) { check_linear("SVG zigzag", 10000, zigzag_path); }
+BOOST_AUTO_TEST_CASE(a_path_of_corners_loads_in_linear_time) { check_linear("SVG zigzag", 2500, zigzag_path); }
 
-BOOST_AUTO_TEST_CASE(a_point_file_loads_in_n_log_squared_n_time) { check_linear("point file", 50000, point_file); }
+BOOST_AUTO_TEST_CASE(a_point_file_loads_in_linear_time) { check_linear("point file", 10000, point_file); }
+
+BOOST_AUTO_TEST_CASE(a_dxf_lwpolyline_loads_in_linear_time) { check_linear("DXF LWPOLYLINE", 5000, dxf_lwpolyline); }
+
+BOOST_AUTO_TEST_CASE(a_chain_of_dxf_lines_loads_in_linear_time) { check_linear("DXF LINE chain", 5000, dxf_lines); }
+
+BOOST_AUTO_TEST_CASE(a_scene_of_many_loops_loads_in_linear_time) { check_linear("scene JSON", 250, four_bar_ladder); }

@@ -231,6 +231,33 @@ BOOST_AUTO_TEST_CASE(smoothing_respects_the_tolerance) {
   }
 }
 
+// The smoothing weight is searched by factors of 10 from the samples' own scale, then bisected (smoothing_weight).
+// At large scales the trial fits overflow: a NaN fit once counted as within the tolerance (std::max(dev, NaN) is
+// dev), and a bisection between weights whose product overflowed (from about 1e154) had no end. Every scale
+// gives a finite fit within its tolerance, found in bounded time, with the deviation it reports.
+BOOST_AUTO_TEST_CASE(smoothing_at_every_scale_is_finite_and_within_the_tolerance) {
+  for (double scale : {1e-100, 1.0, 1e50, 1e60, 1e80, 1e100, 1e150}) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
+    auto q = circle_samples<double>(60, 2.0);
+    for (auto& p : q) p = scale * (p + V(noise(rng), noise(rng)));
+    SplineOptions<double> o;
+    o.closed = true;
+    o.smoothing_tolerance = 2e-3 * scale;
+    const SampledProfile<double> s(q, o);
+    double dev = 0;
+    bool finite = true;
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      const V p = s.jet(s.knots()[k], 0).p;
+      finite = finite && std::isfinite(p.x()) && std::isfinite(p.y());
+      dev = std::max(dev, (p - q[k]).norm());
+    }
+    BOOST_TEST(finite, "scale " << scale);
+    BOOST_TEST(dev <= o.smoothing_tolerance, "scale " << scale << ": deviation " << dev);
+    BOOST_TEST(std::abs(dev - s.max_deviation()) <= 1e-12 * scale, "scale " << scale);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_samples_are_rejected) {
   BOOST_CHECK_THROW(SampledProfile<double>(std::vector<V>{V(0, 0)}), std::invalid_argument);
   BOOST_CHECK_THROW(SampledProfile<double>(std::vector<V>{V(0, 0), V(1, 0), V(1, 0)}), std::invalid_argument);

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace rollkin::io {
 namespace {
@@ -51,6 +52,12 @@ class SceneReader {
  private:
   [[noreturn]] void fail(const std::string& path, const std::string& message) const { js_.fail(path, message); }
 
+  /// The index `names` gives `name`, or -1.
+  static int index_of(const std::unordered_map<std::string, int>& names, const std::string& name) {
+    const auto it = names.find(name);
+    return it == names.end() ? -1 : it->second;
+  }
+
   // ---- sections -------------------------------------------------------------------------------------
   void read_units(Scene& scene) {
     const json* u = js_.get(root_, "units");
@@ -84,7 +91,7 @@ class SceneReader {
       const json& l = links[i];
       js_.object(l, path, {"name", "ground", "contours"});
       const std::string nm = js_.name(js_.require(l, path, "name", "the link's name"), child(path, "name"), "link name");
-      if (builder_.description().find_link(nm) >= 0)
+      if (link_by_name_.count(nm))
         fail(child(path, "name"), "duplicate link name \"" + nm + "\"; link names must be unique");
       bool is_ground = false;
       if (const json* g = js_.get(l, "ground"); g && js_.boolean(*g, child(path, "ground"), "whether this is the ground link")) {
@@ -95,6 +102,7 @@ class SceneReader {
         is_ground = true;
       }
       const int link = builder_.link(nm, is_ground);
+      link_by_name_.emplace(nm, link);
       if (const json* cs = js_.get(l, "contours")) {
         js_.array(*cs, child(path, "contours"), "the link's contours");
         std::set<std::string> names;
@@ -116,14 +124,15 @@ class SceneReader {
     if (!names.insert(nm).second) fail(child(path, "name"), "duplicate contour name \"" + nm + "\" on link \"" + link_name + "\"");
     SE2<double> at;
     if (const json* a = js_.get(c, "at")) at = js_.frame(*a, child(path, "at"), angle_unit_);
-    builder_.contour(link, nm, std::move(shape.shape), at, shape.reversed, std::move(shape.corner_labels));
+    const int contour = builder_.contour(link, nm, std::move(shape.shape), at, shape.reversed, std::move(shape.corner_labels));
+    contour_by_name_.emplace(builder_.description().contours[static_cast<std::size_t>(contour)].name(), contour);
   }
 
   /// One link of a revolute or prismatic pair, by name.
   int pair_link(const json& v, const std::string& path) const {
     const Mechanism<double>& m = builder_.description();
     const std::string ln = js_.string(v, path, "a link name");
-    const int idx = m.find_link(ln);
+    const int idx = index_of(link_by_name_, ln);
     if (idx < 0) {
       std::vector<std::string> names;
       for (const auto& l : m.links) names.push_back(l.name);
@@ -136,7 +145,7 @@ class SceneReader {
   int pair_contour(const json& v, const std::string& path) const {
     const Mechanism<double>& m = builder_.description();
     const std::string cn = js_.string(v, path, "a contour reference \"link.contour\"");
-    const int idx = m.find_contour(cn);
+    const int idx = index_of(contour_by_name_, cn);
     if (idx < 0) {
       std::vector<std::string> names;
       for (const auto& c : m.contours) names.push_back(c.name());
@@ -216,10 +225,11 @@ class SceneReader {
       else if (type == "rolling") kind = PairKind::Rolling;
       else fail(child(path, "type"), "unknown pair type \"" + type + "\"; expected one of " + quoted_list(types));
       const std::string name = js_.name(js_.require(p, path, "name", "the pair's name"), child(path, "name"), "pair name");
-      if (builder_.description().find_pair(name) >= 0)
+      if (pair_by_name_.count(name))
         fail(child(path, "name"), "duplicate pair name \"" + name + "\"; pair names must be unique");
       if (is_contact(kind)) read_contact(p, path, name, kind);
       else read_joint(p, path, name, kind);
+      pair_by_name_.emplace(name, static_cast<int>(k));
     }
   }
 
@@ -242,15 +252,16 @@ class SceneReader {
     const json& in = js_.array(js_.require(root_, "", "inputs", "the list of driver variables, e.g. [\"O_A.theta2\"]"), "inputs",
                                "a list of driver variable names");
     if (in.empty()) fail("inputs", "expected at least one input variable; existing variables: " + quoted_list(variable_names(m)));
-    std::vector<int> drivers;
+    std::unordered_map<std::string, int> variable_by_name;
+    for (std::size_t i = 0; i < m.variables.size(); ++i) variable_by_name.emplace(m.variables[i].name, static_cast<int>(i));
+    std::vector<bool> listed(m.variables.size(), false);
     for (std::size_t i = 0; i < in.size(); ++i) {
       const std::string path = index("inputs", i);
       const std::string v = js_.string(in[i], path, "a variable name \"<pair>.<var>\"");
-      const int idx = m.find_variable(v);
+      const int idx = index_of(variable_by_name, v);
       if (idx < 0) fail(path, "unknown variable \"" + v + "\"; existing variables: " + quoted_list(variable_names(m)));
-      for (int d : drivers)
-        if (d == idx) fail(path, "input \"" + v + "\" is listed twice");
-      drivers.push_back(idx);
+      if (listed[static_cast<std::size_t>(idx)]) fail(path, "input \"" + v + "\" is listed twice");
+      listed[static_cast<std::size_t>(idx)] = true;
       builder_.driver_variable(idx);
       scene.inputs.push_back(v);
     }
@@ -259,16 +270,14 @@ class SceneReader {
   void fill_guess(Scene& scene) const {
     const Mechanism<double>& m = scene.mechanism;
     scene.guess = VectorX<double>::Zero(m.variable_count());
+    std::vector<bool> driven(m.variables.size(), false);
+    for (int d : m.drivers) driven[static_cast<std::size_t>(d)] = true;
     for (std::size_t k = 0; k < m.pairs.size(); ++k) {
       const Pair<double>& p = m.pairs[k];
       for (int j = 0; j < p.variable_count(); ++j) {
         const int i = p.first_variable + j;
         scene.guess(i) = inputs_[k].values[j] * scene.unit_of(i);
-        if (inputs_[k].hold[j]) {
-          bool driver = false;
-          for (int d : m.drivers) driver = driver || d == i;
-          if (!driver) scene.held.push_back(i);
-        }
+        if (inputs_[k].hold[j] && !driven[static_cast<std::size_t>(i)]) scene.held.push_back(i);
       }
     }
   }
@@ -282,12 +291,15 @@ class SceneReader {
     for (std::size_t k = 0; k < m.pairs.size(); ++k)
       if (!inputs_[k].has_values) missing.push_back(static_cast<int>(k));
     if (missing.empty()) return;
+    std::vector<int> places(m.pairs.size(), -1);  // the link a pair on the spanning tree places, by pair
+    for (std::size_t l = 0; l < m.links.size(); ++l)
+      if (static_cast<int>(l) != m.ground && places[static_cast<std::size_t>(m.tree[l].edge.pair)] < 0)
+        places[static_cast<std::size_t>(m.tree[l].edge.pair)] = static_cast<int>(l);
     for (int k : missing)
-      for (std::size_t l = 0; l < m.links.size(); ++l)
-        if (static_cast<int>(l) != m.ground && m.tree[l].edge.pair == k)
-          fail(index("pairs", k), "\"values\" required: link \"" + m.links[l].name + "\" is placed through pair \"" +
-                                      m.pairs[k].name + "\", so its contact cannot be located from the other pairs; give "
-                                      "\"values\": [u0, v0] (contact parameters at the assembly pose)");
+      if (const int l = places[static_cast<std::size_t>(k)]; l >= 0)
+        fail(index("pairs", k), "\"values\" required: link \"" + m.links[l].name + "\" is placed through pair \"" +
+                                    m.pairs[k].name + "\", so its contact cannot be located from the other pairs; give "
+                                    "\"values\": [u0, v0] (contact parameters at the assembly pose)");
     KinematicsData<double> kin(m);
     evaluate_pairs<double>(m, scene.guess, nullptr, 1, kin);
     const std::vector<SE2<double>> pose = link_poses(m, kin);
@@ -344,6 +356,9 @@ class SceneReader {
   AngleUnit angle_unit_ = AngleUnit::Degree;
   MechanismBuilder<double> builder_;
   std::vector<PairInput> inputs_;
+  // Names to indices in builder_'s mechanism, so that reading is linear in the scene's size (Mechanism's
+  // find_* scan their lists: a look-up per pair was quadratic in the pairs).
+  std::unordered_map<std::string, int> link_by_name_, contour_by_name_, pair_by_name_;
 };
 
 }  // namespace

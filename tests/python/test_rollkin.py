@@ -833,6 +833,63 @@ def test_ctrl_c_during_a_long_load_returns_within_a_second(tmp_path):
     assert works == "True"  # the module works afterwards
 
 
+# ---- Ctrl-C while a mechanism is assembled ------------------------------------------------------------------
+
+ASSEMBLY_INTERRUPTED = """
+import os, signal, sys, threading, time
+import rollkin
+scene = rollkin.load_scene(sys.argv[1])
+began = time.monotonic()
+assert scene.solve(60, 60, 1)["status"].tolist() == ["ok"]
+alone = time.monotonic() - began
+timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+sent = time.monotonic() + 0.3
+timer.start()
+try:
+    scene.solve(60, 60, 1)
+    outcome = "returned"
+except KeyboardInterrupt:
+    outcome = "interrupted"
+after = time.monotonic() - sent
+ok = rollkin.load_scene(sys.argv[2]).solve(-50, 100, 50)["status"].tolist() == ["ok"] * 4
+print(outcome, after, alone, ok)
+"""
+
+
+def folded_four_bar_ladder(loops):
+    """A scene of `loops` four-bar loops sharing the ground and a crank of length 1 at 60 deg: coupler and rocker
+    3 long, the rockers' pivots 3 to 3 + 1e-5 loops from the crank's. Every coupler and rocker starts folded
+    (angles 0): the loops' Jacobian is singular at the guess, so the assembly's first steps take the dense
+    decomposition (cubic in the unknowns) instead of the sparse LU."""
+    links = [{"name": "ground", "ground": True}, {"name": "crank"}]
+    pairs = [{"name": "O", "type": "revolute", "links": ["ground", "crank"], "variable": "phi", "value": 60}]
+    for i in range(loops):
+        c, r = "coupler%d" % i, "rocker%d" % i
+        links += [{"name": c}, {"name": r}]
+        pairs += [{"name": "A%d" % i, "type": "revolute", "links": ["crank", c], "at": [{"x": 1}, {}],
+                   "variable": "a", "value": 0},
+                  {"name": "B%d" % i, "type": "revolute", "links": [c, r], "at": [{"x": 3}, {"x": 3}],
+                   "variable": "b", "value": 0},
+                  {"name": "P%d" % i, "type": "revolute", "links": ["ground", r], "at": [{"x": 3 + 1e-5 * i}, {}],
+                   "variable": "p", "value": 0}]
+    return {"units": {"length": "m", "angle": "deg"}, "links": links, "pairs": pairs, "inputs": ["O.phi"]}
+
+
+def test_ctrl_c_during_a_long_assembly_returns_within_a_second(tmp_path):
+    # 600 folded loops (1,800 unknowns): the assembly of one pose takes seconds, the sweep of that pose and its
+    # table afterwards a few ms. In a process of its own, like the load above: a KeyboardInterrupt that comes
+    # only after the solve would stop this test session.
+    (tmp_path / "ladder.json").write_text(json.dumps(folded_four_bar_ladder(600)))
+    proc = subprocess.run([sys.executable, "-c", ASSEMBLY_INTERRUPTED, str(tmp_path / "ladder.json"), str(PAPER)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    outcome, after, alone, works = proc.stdout.split()
+    assert float(alone) > 1.3, "the assembly is too short to tell (%s s)" % alone
+    assert outcome == "interrupted" and float(after) < 1.0, \
+        "%s %s s after Ctrl-C; the assembly alone takes %s s" % (outcome, after, alone)
+    assert works == "True"  # the module works afterwards
+
+
 def test_a_lone_surrogate_in_a_document_is_an_input_error_at_its_path():
     doc = rollkin.load_scene(PAPER).document()
     doc["links"][0]["name"] = "x\ud800"

@@ -316,10 +316,16 @@ template <class S> class SampledProfile {
     if (closed_) values_.back() = values_.front();
   }
 
+  /// The largest distance of the fit with weight alpha from the samples; NaN if any is NaN (an overflowed
+  /// fit), which no tolerance admits (std::max(dev, NaN) kept dev: such a fit counted as within).
   S deviation_for(const std::vector<Vec2<S>>& q, const S& alpha) {
     solve_moments(q, SplineEnd::Natural, alpha);
     S dev(0);
-    for (std::size_t i = 0; i < q.size(); ++i) dev = std::max(dev, S((q[i] - values_[i]).norm()));
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const S d = (q[i] - values_[i]).norm();
+      if (!(d == d)) return d;
+      dev = std::max(dev, d);
+    }
     return dev;
   }
 
@@ -342,8 +348,11 @@ template <class S> class SampledProfile {
       if (deviation_for(q, trial) <= tol) lo = trial; else hi = trial;
     }
     if (lo == S(0)) return S(0);
-    while (hi > lo * (S(1) + S(1) / S(1000))) {
-      const S mid = sqrt(lo * hi);
+    // Bisection of log(alpha) from hi / lo = 10 to 1.001 takes 12 steps; at most 64, so an infinite hi (the
+    // bracket's last factor of 10 overflowed and its fit failed) ends too. sqrt(lo) sqrt(hi) cannot overflow
+    // where lo hi would (lo from about 1e154): sqrt(inf) was inf, whose fit fails, and hi stayed inf for ever.
+    for (int k = 0; k < 64 && hi > lo * (S(1) + S(1) / S(1000)); ++k) {
+      const S mid = sqrt(lo) * sqrt(hi);
       if (deviation_for(q, mid) <= tol) lo = mid; else hi = mid;
     }
     return lo;
