@@ -53,7 +53,7 @@ std::string selection_name(const DxfSelection& sel) {
     return s;
   }
   std::string s = sel.layer.empty() ? std::string("the drawing") : "layer \"" + sel.layer + "\"";
-  if (sel.near) s += " near (" + fmt(sel.near->x()) + ", " + fmt(sel.near->y()) + ")";
+  if (sel.near) s += " near (" + format_number(sel.near->x()) + ", " + format_number(sel.near->y()) + ")";
   return s;
 }
 

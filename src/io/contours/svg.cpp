@@ -34,7 +34,7 @@ std::optional<std::size_t> subpath_number(const json& c, const std::string& path
   if (!k) return std::nullopt;
   const double v = js.number(*k, child(path, "subpath"), "a subpath number (1 for the first)");
   if (!(v >= 1) || v != std::floor(v) || v > 1e9)
-    js.fail(child(path, "subpath"), "expected a whole number from 1 (subpaths count from 1), got " + fmt(v));
+    js.fail(child(path, "subpath"), "expected a whole number from 1 (subpaths count from 1), got " + format_number(v));
   return static_cast<std::size_t>(v);
 }
 
