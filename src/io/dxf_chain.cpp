@@ -7,6 +7,7 @@
 // or more piece ends meet is a branch. A component without branches is a path (two nodes with one end) or a
 // cycle (every node with two ends), walked from one end.
 #include "dxf_detail.hpp"
+#include "segment_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,53 +51,6 @@ std::vector<std::size_t> end_nodes(const std::vector<Piece>& pieces, double tol)
   std::vector<std::size_t> node(n);
   for (std::size_t i = 0; i < n; ++i) node[i] = uf.find(i);
   return node;
-}
-
-/// Point on a rational Bezier segment at t (de Casteljau in homogeneous coordinates).
-V point_at(const Segment& s, double t) {
-  std::vector<V> p(s.points.size());
-  std::vector<double> w(s.points.size());
-  for (std::size_t i = 0; i < p.size(); ++i) w[i] = s.weight(i), p[i] = s.points[i] * w[i];
-  for (std::size_t r = 1; r < p.size(); ++r)
-    for (std::size_t i = 0; i + r < p.size(); ++i) {
-      p[i] = (1 - t) * p[i] + t * p[i + 1];
-      w[i] = (1 - t) * w[i] + t * w[i + 1];
-    }
-  return p[0] / w[0];
-}
-
-/// Distance from q to one segment: 64 samples, then golden section around every sample nearer than its
-/// neighbours (the squared distance is smooth; at a minimum its error is the square of the parameter's).
-double distance_to_segment(const Segment& s, const V& q) {
-  constexpr int kSamples = 64;
-  std::vector<double> d(kSamples + 1);
-  for (int k = 0; k <= kSamples; ++k) d[k] = (point_at(s, double(k) / kSamples) - q).norm();
-  double best = *std::min_element(d.begin(), d.end());
-  const double golden = (std::sqrt(5.0) - 1) / 2;
-  for (int k = 0; k <= kSamples; ++k) {
-    if ((k > 0 && d[k - 1] < d[k]) || (k < kSamples && d[k + 1] < d[k])) continue;
-    double a = double(std::max(0, k - 1)) / kSamples, b = double(std::min(kSamples, k + 1)) / kSamples;
-    double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-    double f1 = (point_at(s, x1) - q).norm(), f2 = (point_at(s, x2) - q).norm();
-    for (int it = 0; it < 80 && b - a > 1e-17; ++it) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1, x1 = b - golden * (b - a), f1 = (point_at(s, x1) - q).norm();
-      } else {
-        a = x1, x1 = x2, f1 = f2, x2 = a + golden * (b - a), f2 = (point_at(s, x2) - q).norm();
-      }
-    }
-    best = std::min({best, f1, f2});
-  }
-  return best;
-}
-
-/// Lower bound of the distance from q to a segment: to the bounding box of its control points (which holds
-/// the curve, weights being positive).
-double hull_distance(const Segment& s, const V& q) {
-  V lo = s.points[0], hi = lo;
-  for (const V& p : s.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const V outside = (lo - q).cwiseMax(q - hi).cwiseMax(V(0, 0));
-  return outside.norm();
 }
 
 std::string tolerance_text(double tol, double size) {
@@ -209,18 +163,16 @@ Chain walk_chain(const std::string& file, const std::vector<Piece>& pieces, cons
 
 double distance_to_component(const std::vector<Piece>& pieces, const Component& component, const V& q) {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t k : component.pieces)
-    for (const Segment& s : pieces[k].segments)
-      if (hull_distance(s, q) < best) {
-        const double d = distance_to_segment(s, q);
-        if (d < best) best = d;  // (never NaN: a distance that overflowed is no nearer)
-      }
+  for (std::size_t k : component.pieces) {
+    const double d = io::distance_to_segments(pieces[k].segments, q);
+    if (d < best) best = d;  // (never NaN: a distance that overflowed is no nearer)
+  }
   return best;
 }
 
 V point_on_component(const std::vector<Piece>& pieces, const Component& component) {
   const Piece& p = pieces[component.pieces.front()];
-  return point_at(p.segments[p.segments.size() / 2], 0.5);
+  return io::segment_point(p.segments[p.segments.size() / 2], 0.5);
 }
 
 std::string component_entities(const std::vector<Piece>& pieces, const Component& component, std::size_t limit) {

@@ -3,11 +3,12 @@
 // selection by layer or "near" + layer has), each with the scene selector that picks exactly it.
 //
 // Selector: {"type": "dxf", "file": BASENAME, "layer": L} when the layer holds one chain; otherwise "near" a
-// point on the chain (the middle of its middle segment) with the layer, when that chain is the nearest to it
+// point on the chain (the middle of its middle segment, else one of 64 points along it) with the layer, when that chain is the nearest to it
 // by more than the tie margin of a selection (kDxfNearTie x the layer's size); otherwise "handles" of its
 // entities when these form exactly this chain alone; otherwise none (empty): a chain with a branch, or an
 // entity that cannot be read (listed as "TYPE HANDLE: why").
 #include "dxf_detail.hpp"
+#include "segment_geometry.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/input_file.hpp"
@@ -32,24 +33,17 @@ double length_of(const std::vector<Segment>& segments) {
   return sum;
 }
 
-/// Point at parameter t of a rational Bezier segment (de Casteljau in homogeneous coordinates).
-V point_at(const Segment& s, double t) {
-  std::vector<V> p(s.points.size());
-  std::vector<double> w(s.points.size());
-  for (std::size_t i = 0; i < p.size(); ++i) w[i] = s.weight(i), p[i] = s.points[i] * w[i];
-  for (std::size_t r = 1; r < p.size(); ++r)
-    for (std::size_t i = 0; i + r < p.size(); ++i) p[i] = (1 - t) * p[i] + t * p[i + 1], w[i] = (1 - t) * w[i] + t * w[i + 1];
-  return p[0] / w[0];
-}
-
-/// Bounding box of the curve: its ends and 32 points per segment (a box that the sampled curve just touches).
-void bounding_box(const std::vector<Segment>& segments, V& lo, V& hi) {
-  lo = hi = segments.front().points.front();
-  for (const Segment& s : segments)
-    for (int k = 0; k <= 32; ++k) {
-      const V p = point_at(s, k / 32.0);
-      lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    }
+/// Points on a chain that "near" may name it by: the middle of its middle segment first, then up to 64 more
+/// spread along it (where other chains cross the middle, another point names it).
+std::vector<V> near_candidates(const std::vector<Segment>& segments) {
+  std::vector<V> at{segment_point(segments[segments.size() / 2], 0.5)};
+  const std::size_t count = std::min<std::size_t>(64, 4 * segments.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    const double u = (k + 0.5) * static_cast<double>(segments.size()) / static_cast<double>(count);
+    const std::size_t i = std::min(segments.size() - 1, static_cast<std::size_t>(u));
+    at.push_back(segment_point(segments[i], u - static_cast<double>(i)));
+  }
+  return at;
 }
 
 json base_selector(const std::string& file, const std::string& layer) {
@@ -115,14 +109,14 @@ class LayerLister {
       }
       l.entities.push_back(std::string("(not one contour: ") + ex.what() + ")");
       l.length = length_of(l.segments);
-      bounding_box(l.segments, l.min, l.max);
+      segments_box(l.segments, l.min, l.max);
       return l;
     }
     for (std::size_t k : chain.pieces) l.entities.push_back(pieces_[k].label);
     l.closed = chain.closed;
     l.segments = chain.segments;
     l.length = length_of(l.segments);
-    bounding_box(l.segments, l.min, l.max);
+    segments_box(l.segments, l.min, l.max);
     const BezierPathOptions<double> options;
     l.corners = path_corners(l.segments, l.closed, options.joint_tolerance * pieces_size(pieces_, c.pieces), options.corner_tolerance).size();
     l.selector = selector(c, l.segments);
@@ -133,12 +127,12 @@ class LayerLister {
   std::string selector(const Component& c, const std::vector<Segment>& segments) const {
     if (unreadable_.empty()) {
       if (chains_.size() == 1) return base_selector(file_, layer_).dump();
-      const V at = point_at(segments[segments.size() / 2], 0.5);
-      if (nearest_alone(c, at)) {
-        json j = base_selector(file_, layer_);
-        j["near"] = {at.x(), at.y()};
-        return j.dump();
-      }
+      for (const V& at : near_candidates(segments))
+        if (nearest_alone(c, at)) {
+          json j = base_selector(file_, layer_);
+          j["near"] = {at.x(), at.y()};
+          return j.dump();
+        }
     }
     std::vector<std::string> handles;
     for (std::size_t k : c.pieces) {

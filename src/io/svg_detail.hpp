@@ -29,13 +29,6 @@ double control_extent(const std::vector<BezierSegment<double>>& segments);
 /// last point equal to the first goes this way.
 void merge_short_segments(SvgSubpath& subpath);
 
-/// A point of a (rational) Bezier segment at t in [0, 1] (de Casteljau in homogeneous coordinates).
-Vec2<double> point_at(const BezierSegment<double>& s, double t);
-
-/// Distance from q to the nearest point of the segments (64 samples per segment, then a golden-section search
-/// around the nearest sample).
-double distance_to(const std::vector<BezierSegment<double>>& segments, const Vec2<double>& q);
-
 /// "near" picks a subpath only when the next nearest is farther by more than this fraction of the distance
 /// (plus 1e-9 of the drawing's size): otherwise the two are about equally near and the choice is an error.
 constexpr double kNearTie = 0.01;

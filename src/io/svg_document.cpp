@@ -6,6 +6,7 @@
 #include "rollkin/io/units.hpp"
 #include "rollkin/io/format.hpp"
 
+#include "segment_geometry.hpp"
 #include "svg_detail.hpp"
 
 #include <pugixml.hpp>
@@ -1008,7 +1009,7 @@ SvgShape select_shape(std::vector<SvgShape> all, const SvgReadOptions& o, const 
     std::vector<std::pair<double, std::size_t>> d;
     double extent = 0;
     for (std::size_t k = 0; k < all.size(); ++k) {
-      d.emplace_back(svg_detail::distance_to(all[k].segments, *o.near), k);
+      d.emplace_back(io::distance_to_segments(all[k].segments, *o.near), k);
       extent = std::max(extent, svg_detail::control_extent(all[k].segments));
     }
     std::sort(d.begin(), d.end());
@@ -1024,44 +1025,6 @@ SvgShape select_shape(std::vector<SvgShape> all, const SvgReadOptions& o, const 
 }
 
 }  // namespace
-
-namespace svg_detail {
-
-P point_at(const Segment& s, double t) {
-  std::vector<Eigen::Vector3d> h;
-  for (std::size_t k = 0; k < s.points.size(); ++k) {
-    const double w = s.weight(k);
-    h.emplace_back(w * s.points[k].x(), w * s.points[k].y(), w);
-  }
-  for (std::size_t r = h.size() - 1; r > 0; --r)
-    for (std::size_t i = 0; i < r; ++i) h[i] = (1 - t) * h[i] + t * h[i + 1];
-  return P(h[0].x() / h[0].z(), h[0].y() / h[0].z());
-}
-
-double distance_to(const std::vector<Segment>& segments, const P& q) {
-  double best = std::numeric_limits<double>::infinity();
-  constexpr int kSamples = 64;
-  for (const Segment& s : segments) {
-    int at = 0;
-    double near = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= kSamples; ++i) {
-      const double d = (point_at(s, double(i) / kSamples) - q).norm();
-      if (d < near) near = d, at = i;
-    }
-    // Golden-section search in the bracket around the nearest sample (the distance is unimodal there once
-    // the samples resolve the curve).
-    double a = std::max(0, at - 1) / double(kSamples), b = std::min(kSamples, at + 1) / double(kSamples);
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 80 && b - a > 1e-16; ++it) {
-      const double c = b - g * (b - a), e = a + g * (b - a);
-      if ((point_at(s, c) - q).norm() < (point_at(s, e) - q).norm()) b = e; else a = c;
-    }
-    best = std::min({best, near, (point_at(s, (a + b) / 2) - q).norm()});
-  }
-  return best;
-}
-
-}  // namespace svg_detail
 
 namespace {
 

@@ -4,6 +4,7 @@
 #include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/svg_path.hpp"
 
+#include "segment_geometry.hpp"
 #include "svg_detail.hpp"
 
 #include <nlohmann/json.hpp>
@@ -22,7 +23,7 @@ using ordered_json = nlohmann::ordered_json;
 std::vector<P> sampled(const std::vector<BezierSegment<double>>& segments, int per_segment) {
   std::vector<P> out;
   for (const auto& s : segments)
-    for (int i = 0; i <= per_segment; ++i) out.push_back(svg_detail::point_at(s, double(i) / per_segment));
+    for (int i = 0; i <= per_segment; ++i) out.push_back(segment_point(s, double(i) / per_segment));
   return out;
 }
 
@@ -37,39 +38,15 @@ std::optional<P> near_point(const std::vector<SvgShape>& shapes, std::size_t k) 
   for (const P& p : sampled(shapes[k].segments, 4)) {
     double clearance = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < shapes.size() && clearance > best_clearance; ++j)
-      if (j != k) clearance = std::min(clearance, svg_detail::distance_to(shapes[j].segments, p));
+      if (j != k) clearance = std::min(clearance, distance_to_segments(shapes[j].segments, p));
     if (!best || clearance > best_clearance) {
       best = p;
       best_clearance = clearance;
     }
   }
-  const double own = svg_detail::distance_to(shapes[k].segments, *best);
+  const double own = distance_to_segments(shapes[k].segments, *best);
   if (!(best_clearance - own > svg_detail::kNearTie * own + 1e-9 * extent)) return std::nullopt;
   return best;
-}
-
-/// The bounding box of the segments: per segment and coordinate, the largest and smallest of 32 samples, each
-/// refined by a golden-section search between its neighbours (the curve's extremes, to round-off).
-void bounding_box(const std::vector<BezierSegment<double>>& segments, P& lo, P& hi) {
-  constexpr int kSamples = 32;
-  lo = hi = segments.front().points.front();
-  for (const auto& s : segments)
-    for (int axis = 0; axis < 2; ++axis)
-      for (const double sign : {1.0, -1.0}) {  // +1: the largest, -1: the smallest
-        auto value = [&](double t) { return sign * svg_detail::point_at(s, t)[axis]; };
-        int at = 0;
-        for (int i = 1; i <= kSamples; ++i)
-          if (value(double(i) / kSamples) > value(double(at) / kSamples)) at = i;
-        double a = std::max(0, at - 1) / double(kSamples), b = std::min(kSamples, at + 1) / double(kSamples);
-        const double g = (std::sqrt(5.0) - 1) / 2;
-        for (int it = 0; it < 80 && b - a > 1e-16; ++it) {
-          const double c = b - g * (b - a), e = a + g * (b - a);
-          if (value(c) > value(e)) b = e; else a = c;
-        }
-        const double extreme = sign * std::max({value(double(at) / kSamples), value((a + b) / 2)});
-        lo[axis] = std::min(lo[axis], extreme);
-        hi[axis] = std::max(hi[axis], extreme);
-      }
 }
 
 std::string selector(const std::string& file, const std::vector<SvgShape>& shapes, std::size_t k) {
@@ -103,7 +80,7 @@ std::vector<ListedChain> list_svg_contours(const std::string& path) {
     c.entities = {s.subpaths > 1 ? "subpath " + std::to_string(s.subpath) : s.element};
     c.closed = s.closed;
     c.length = svg_bezier_path(s).total_length();
-    bounding_box(s.segments, c.min, c.max);
+    segments_box(s.segments, c.min, c.max);
     c.corners = s.corners.size();
     c.segments = s.segments;
     c.selector = selector(path, shapes, k);
