@@ -100,10 +100,10 @@ Command synthesize_command(CLI::App& rollkin) {
 
 namespace {
 
-std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
-  std::string out = "# cam profile written by rollkin synthesize cam from " + spec.file +
-                    "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
-                    (spec.length_label.empty() ? std::string("as the spec") : spec.length_label) + "\n";
+/// A point file (docs/scene_format.md, "Point files"): the comment line `what`, then one "x y" line per point,
+/// each number the shortest text that reads back to the same double.
+std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
+  std::string out = "# " + what + "\n";
   for (const auto& p : points) {
     io::append_double(out, p.x());
     out += ' ';
@@ -111,6 +111,13 @@ std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<
     out += '\n';
   }
   return out;
+}
+
+std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
+  return points_text("cam profile written by rollkin synthesize cam from " + spec.file +
+                         "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
+                         (spec.length_label.empty() ? std::string("as the spec") : spec.length_label),
+                     points);
 }
 
 /// A follower given as any contour, at the law's start in the world: 400 points of its domain placed in the
@@ -229,17 +236,6 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   if (!ok && rt.worst_deviation > spec.tolerance)
     std::cerr << o.spec << ": the analysed motion deviates from the law by more than the tolerance\n";
   return ok ? 0 : 1;
-}
-
-std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
-  std::string out = "# " + what + "\n";
-  for (const auto& p : points) {
-    io::append_double(out, p.x());
-    out += ' ';
-    io::append_double(out, p.y());
-    out += '\n';
-  }
-  return out;
 }
 
 int run_synthesize_gears(const SynthesizeCamOptions& o) {
