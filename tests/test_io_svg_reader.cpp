@@ -810,7 +810,7 @@ BOOST_AUTO_TEST_CASE(use_cycles_depth_and_count_are_bounded) {
   for (int k = 0; k < 5000; ++k) nested += "</g>";
   SvgReadOptions anywhere;
   anywhere.near = V(0, 0);
-  BOOST_TEST(contains(error_of(doc(nested), "", anywhere), "is nested more than 2000 elements deep below the selected element"));
+  BOOST_TEST(contains(error_of(doc(nested), "", anywhere), "is nested more than 256 elements deep below the selected element"));
   BOOST_TEST(contains(error_of(doc("<use id=\"a\" href=\"#nothing\"/>"), "a"), "references \"#nothing\", which is not in the file"));
   BOOST_TEST(contains(error_of(doc("<use id=\"a\" href=\"other.svg#x\"/>"), "a"), "outside this file"));
 }

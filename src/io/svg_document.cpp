@@ -515,10 +515,11 @@ struct DrawnSet {
 };
 
 /// Bounds of the walk: <use> nesting (clones of clones multiply), the count of drawn shapes, and the nesting of
-/// elements below the selected one (the walk recurses).
+/// elements below the selected one (the walk recurses: 256 levels keep it far inside the stack also under
+/// AddressSanitizer, whose frames are several times larger; at 2000 its 8 MB overflowed).
 constexpr std::size_t kMaxUseDepth = 32;
 constexpr std::size_t kMaxDrawn = 100000;
-constexpr std::size_t kMaxNesting = 2000;
+constexpr std::size_t kMaxNesting = 256;
 
 /// Walks the rendering tree below an element, expanding <use> and <switch> (SVG 1.1, 5.6, 5.8.2).
 class DrawnCollector {
