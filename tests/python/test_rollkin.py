@@ -812,10 +812,12 @@ print(outcome, after, alone, ok)
 
 
 def test_ctrl_c_during_a_long_load_returns_within_a_second(tmp_path):
-    # A unit disk of 2,000,000 samples (docs/python.md: reading is linear, about 0.5 s per million points on an
-    # idle machine): the reading, the spline fit and the checks run on a worker thread that Ctrl-C leaves. In a
-    # process of its own: a KeyboardInterrupt that comes only after the load would stop this test session.
-    n = 2_000_000
+    # A unit disk of 4,000,000 samples (docs/python.md: reading is linear, about 0.3 s per million points on an
+    # idle machine since the self-intersection check works on runs of segments; the load must outlast the 0.3 s
+    # before Ctrl-C and the 1 s allowed after it): the reading, the spline fit and the checks run on a worker
+    # thread that Ctrl-C leaves. In a process of its own: a KeyboardInterrupt that comes only after the load
+    # would stop this test session.
+    n = 4_000_000
     t = np.linspace(0, 2 * np.pi, n, endpoint=False)
     xy = np.empty(2 * n)
     xy[0::2], xy[1::2] = np.cos(t), np.sin(t)
