@@ -24,7 +24,7 @@
 #include "rollkin/profile/quadrature.hpp"
 #include "rollkin/profile/spline.hpp"
 #include "rollkin/scalar_mpfr.hpp"
-#include "rollkin/solve/continuation.hpp"
+#include "rollkin/solve/continuation.hxx"  // the bodies of the class templates instantiated below
 #include "rollkin/solve/mpfr50_instances.hpp"
 #include "rollkin/synthesis.hpp"
 

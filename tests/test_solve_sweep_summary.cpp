@@ -52,23 +52,24 @@ void check_equal(const SweepSummary<double>& a, const SweepSummary<double>& b, b
   for (std::size_t i = 0; i < a.singular.size(); ++i) BOOST_TEST(a.singular[i].index == b.singular[i].index);
 }
 
-/// What the summary's continuation reports, with the values it passes for every pose (those a SweepSummary
-/// drops): the interpolated poses' values, for comparison with sweep()'s solved ones.
-struct Recorded {
-  static constexpr bool holds_values = false;
+/// What the summary's continuation reports into a sink that keeps no values (sweep_into), with the values it
+/// passes for every pose (those a SweepSummary drops): the interpolated poses' values, for comparison with sweep()'s solved ones.
+struct Recorded final : SweepSink<double> {
   MatrixX<double> q;
   std::vector<SolveReport<double>> reports, limits;
   std::vector<bool> interpolated;
-  void set_pose(std::size_t k, const VectorX<double>& x, const VectorX<double>&, const SolveReport<double>& r) {
+  bool keeps_values() const override { return false; }
+  void add_limit(const SolveReport<double>& limit) override { limits.push_back(limit); }
+  void set_pose(std::size_t k, const VectorX<double>& x, const VectorX<double>&, const SolveReport<double>& r) override {
     q.col(static_cast<Eigen::Index>(k)) = x;
     set_report(k, r);
   }
-  void set_interpolated_pose(std::size_t k, const VectorX<double>& x, const SolveReport<double>& r) {
+  void set_interpolated_pose(std::size_t k, const VectorX<double>& x, const SolveReport<double>& r) override {
     set_pose(k, x, x, r);
     interpolated[k] = true;
   }
-  void set_report(std::size_t k, const SolveReport<double>& r) { reports[k] = r; }
-  void share_report(std::size_t k, std::size_t like) { reports[k] = reports[like]; }
+  void set_report(std::size_t k, const SolveReport<double>& r) override { reports[k] = r; }
+  void share_report(std::size_t k, std::size_t like) override { reports[k] = reports[like]; }
 };
 
 /// Dense output on `inputs` against sweep(): the same status for every input; every plainly solved pose
@@ -84,7 +85,7 @@ std::size_t check_interpolated(const Fixture<double>& f, const std::vector<doubl
   r.q = MatrixX<double>::Zero(q.size(), static_cast<Eigen::Index>(inputs.size()));
   r.reports.assign(inputs.size(), SolveReport<double>{});
   r.interpolated.assign(inputs.size(), false);
-  detail::trace_sweep(f.mech, sd, q, 0, inputs, ContinuationSettings<double>{}, r);
+  sweep_into(f.mech, sd, q, assembly, 0, inputs, ContinuationSettings<double>{}, r);
   std::size_t interpolated = 0;
   double worst = 0;
   for (std::size_t k = 0; k < inputs.size(); ++k) {

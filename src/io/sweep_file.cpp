@@ -1,7 +1,7 @@
 // A sweep kept in an unlinked temporary file (rollkin/io/sweep_file.hpp).
 #include "rollkin/io/sweep_file.hpp"
 
-#include "rollkin/solve/continuation.hpp"
+
 
 #include <fcntl.h>
 #include <sys/statvfs.h>
@@ -99,6 +99,10 @@ void SweepFile::record_report(std::size_t k, const SolveReport<double>& rep) {
 }
 
 void SweepFile::set_report(std::size_t k, const SolveReport<double>& rep) { record_report(k, rep); }
+
+void SweepFile::set_interpolated_pose(std::size_t, const VectorX<double>&, const SolveReport<double>&) {
+  throw std::logic_error("SweepFile::set_interpolated_pose: a sink that keeps values is given solved poses only");
+}
 
 void SweepFile::share_report(std::size_t k, std::size_t like) {
   if (like != shared_row_) {  // the row the continuation just reported (the first beyond a limit)

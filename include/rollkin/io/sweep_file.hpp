@@ -13,6 +13,7 @@
 //   file.read(first, count, block);  // rows first .. first + count - 1 as a SweepResult of count poses
 #pragma once
 
+#include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/sweep_summary.hpp"
 
 #include <cstddef>
@@ -20,14 +21,9 @@
 #include <string>
 #include <vector>
 
-namespace rollkin {
-template <class S> struct ContinuationSettings;
-template <class S> struct SolveData;
-}  // namespace rollkin
-
 namespace rollkin::io {
 
-class SweepFile : public SweepSummary<double> {
+class SweepFile : public SweepSummary<double>, public SweepSink<double> {
  public:
   /// Keeps every pose's values (in the file): the continuation solves each requested input.
   static constexpr bool holds_values = true;
@@ -39,15 +35,19 @@ class SweepFile : public SweepSummary<double> {
   SweepFile(const SweepFile&) = delete;
   SweepFile& operator=(const SweepFile&) = delete;
 
-  // What the continuation reports (detail::trace_sweep), as into a SweepResult.
-  template <class Q, class V> void set_pose(std::size_t k, const Q& q, const V& qdot, const SolveReport<double>& rep) {
+  // What the continuation reports (sweep_into, solve/continuation.hpp), as into a SweepResult.
+  bool keeps_values() const override { return true; }
+  void add_limit(const SolveReport<double>& limit) override { limits.push_back(limit); }
+  void set_pose(std::size_t k, const VectorX<double>& q, const VectorX<double>& qdot, const SolveReport<double>& rep) override {
     double* row = writable_row(k);
     for (int i = 0; i < variables_; ++i) row[i] = q(i);
     for (int i = 0; i < variables_; ++i) row[variables_ + i] = qdot(i);
     record_report(k, rep);
   }
-  void set_report(std::size_t k, const SolveReport<double>& rep);
-  void share_report(std::size_t k, std::size_t like);
+  void set_report(std::size_t k, const SolveReport<double>& rep) override;
+  void share_report(std::size_t k, std::size_t like) override;
+  /// Never called: a sink that keeps values is given solved poses only.
+  void set_interpolated_pose(std::size_t k, const VectorX<double>& q, const SolveReport<double>& rep) override;
 
   /// Writes what is still buffered; read() may be called from any thread after it.
   void finish();

@@ -10,6 +10,7 @@
 
 namespace rollkin {
 
+ROLLKIN_SOLVE_DATA_INSTANCES(extern template, mpfr50)
 ROLLKIN_POSITION_INSTANCES(extern template, mpfr50)
 ROLLKIN_CONTINUATION_INSTANCES(extern template, mpfr50)
 ROLLKIN_ANALYSIS_INSTANCES(extern template, mpfr50)

@@ -192,6 +192,8 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
 
   /// Gives pose k the report already stored for pose `like` (no copy of a long report).
   void share_report(std::size_t k, std::size_t like) { this->records_[k] = this->records_[like]; }
+  /// A limit the continuation met (limits).
+  void add_limit(const SolveReport<S>& limit) { this->limits.push_back(limit); }
 
   /// Every requested pose plainly solved (no limit, no singular pose).
   bool all_solved() const {

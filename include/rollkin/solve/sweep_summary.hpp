@@ -58,6 +58,7 @@ template <class S> struct SweepSummary {
   /// Pose k has the status of pose `like`, which the continuation gives only to poses without values (not
   /// reached beyond a limit), so nothing else is counted.
   void share_report(std::size_t k, std::size_t like) { status[k] = status[like]; }
+  void add_limit(const SolveReport<S>& limit) { limits.push_back(limit); }
   /// Singular poses in the order of the requested inputs (the continuation reports both sides of the
   /// assembly input in turn).
   void sort_singular() {
