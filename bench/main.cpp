@@ -15,7 +15,8 @@
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/point_file.hpp"
-#include "rollkin/io/svg.hpp"
+#include "rollkin/io/svg_chart.hpp"
+#include "rollkin/io/svg_markup.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/interference.hpp"
 
