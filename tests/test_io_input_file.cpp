@@ -11,7 +11,7 @@
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/io/scene.hpp"
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_reader.hpp"
 #include "rollkin/reference.hpp"
 
 #include <fcntl.h>
@@ -81,8 +81,8 @@ std::vector<Reader> readers(const fs::path& dir) {
   return {
       {"scene", "the scene file", [](const std::string& f) { rollkin::io::load_scene(f); }},
       {"point file", "the point file", [](const std::string& f) { rollkin::read_point_file(f, 4); }},
-      {"SVG", "the SVG file", [](const std::string& f) { rollkin::read_svg_shape(f, "cam"); }},
-      {"DXF", "the DXF file", [](const std::string& f) { rollkin::read_dxf_contour(f, rollkin::DxfSelection{"CAM", ""}); }},
+      {"SVG", "the SVG file", [](const std::string& f) { rollkin::io::read_svg_shape(f, "cam"); }},
+      {"DXF", "the DXF file", [](const std::string& f) { rollkin::io::read_dxf_contour(f, rollkin::io::DxfSelection{"CAM", ""}); }},
       {"reference table", "the reference file", [](const std::string& f) { rollkin::read_reference_csv(f); }},
       {"scene's samples contour", "the point file",
        scene_reading(R"({"name": "c", "type": "samples", "file": "FILE"})")},

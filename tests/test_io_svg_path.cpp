@@ -3,7 +3,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_path_data.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,9 @@
 
 using rollkin::BezierPath;
 using rollkin::InputError;
-using rollkin::parse_svg_path_data;
-using rollkin::SvgPathOptions;
-using rollkin::SvgSubpath;
+using rollkin::io::parse_svg_path_data;
+using rollkin::io::SvgPathOptions;
+using rollkin::io::SvgSubpath;
 using V = rollkin::Vec2<double>;
 
 namespace {

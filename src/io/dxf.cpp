@@ -26,7 +26,7 @@
 #include <stdexcept>
 #include <sstream>
 
-namespace rollkin {
+namespace rollkin::io {
 namespace dxf {
 
 std::string number(double x) {
@@ -633,4 +633,4 @@ DxfContour read_dxf_contour(const std::string& path, const DxfSelection& selecti
   return contour_from(io::read_input_file(path, "the DXF file"), path, selection, path);
 }
 
-}  // namespace rollkin
+}  // namespace rollkin::io

@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 class Collector : public DL_CreationAdapter {
  public:
@@ -277,4 +277,4 @@ class Collector : public DL_CreationAdapter {
   long current_ = -1, target_ = -1;
 };
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 Segment reversed(Segment s) {
   std::reverse(s.points.begin(), s.points.end());
@@ -357,4 +357,4 @@ class Converter {
 
 Piece convert_entity(const RawEntity& e, const std::string& file) { return Converter(file).convert(e); }
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

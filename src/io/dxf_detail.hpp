@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 using V = Vec2<double>;
 using Segment = BezierSegment<double>;
@@ -142,9 +142,9 @@ V point_on_component(const std::vector<Piece>& pieces, const Component& componen
 /// "LINE 2A, ARC 2B" (at most `limit` names, then "...").
 std::string component_entities(const std::vector<Piece>& pieces, const Component& component, std::size_t limit = 6);
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 // ---- the drawing (dxf.cpp) -----------------------------------------------------------------------------------
 
@@ -192,4 +192,4 @@ class Placer {
   std::size_t placed_ = 0;
 };
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

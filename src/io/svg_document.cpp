@@ -1,6 +1,6 @@
 // SVG documents: the shapes an element (or the whole document) draws, with <use>, <symbol> and <switch>
-// expanded; their transforms, the root viewport and units; the choice of one subpath (see io/svg_path.hpp).
-#include "rollkin/io/svg_path.hpp"
+// expanded; their transforms, the root viewport and units; the choice of one subpath (see io/svg_reader.hpp).
+#include "rollkin/io/svg_reader.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/text_position.hpp"
 #include "rollkin/io/units.hpp"
@@ -21,7 +21,7 @@
 
 #include <Eigen/Core>
 
-namespace rollkin {
+namespace rollkin::io {
 namespace {
 
 using P = Vec2<double>;
@@ -1094,4 +1094,4 @@ std::vector<SvgSubpath> read_svg_path(const std::string& svg_file, const std::st
   return {SvgSubpath{std::move(s.segments), s.closed, std::move(s.origins)}};
 }
 
-}  // namespace rollkin
+}  // namespace rollkin::io
