@@ -1,4 +1,4 @@
-// The DXF reader's libdxflib adapter (internal to src/io/dxf.cpp): collects the entities of the ENTITIES
+// The DXF reader's libdxflib adapter (internal to src/io/dxf_drawing.cpp): collects the entities of the ENTITIES
 // section with their type, handle and layer (from processCodeValuePair, which libdxflib calls for every group
 // before interpreting it), checks group values and the counts libdxflib sizes its arrays with, and keeps the
 // geometry libdxflib reports.
