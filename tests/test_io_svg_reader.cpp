@@ -265,7 +265,7 @@ BOOST_AUTO_TEST_CASE(transform_lists_compose_right_to_left) {
   BOOST_TEST((nested.segments[0].points[1] - V(3, 3)).norm() < 1e-15);
 }
 
-// ---- corners (issue 12) ---------------------------------------------------------------------------------
+// ---- corners (docs/scene_format.md, "Corners") ------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(corners_are_listed_where_the_tangent_jumps) {
   SvgReadOptions o;
@@ -345,7 +345,8 @@ BOOST_AUTO_TEST_CASE(short_pieces_end_where_svgelements_ends_them) {
 // ---- compatibility entry point used by the scene reader ---------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(read_svg_path_applies_group_transforms) {
-  // The silently wrong answer of issue 12: a transform on an enclosing <g> used to be ignored.
+  // A silently wrong answer once (docs/scene_format.md, "SVG contours", step 1): a transform on an enclosing <g>
+  // used to be ignored.
   const std::string file = rollkin::testing::write_text(
       rollkin::testing::scratch_dir("io_svg_reader") / "group.svg",
       doc("<g transform=\"translate(5,0)\"><path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"));
