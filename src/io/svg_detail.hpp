@@ -1,4 +1,5 @@
-// Pieces shared by the SVG path-data parser (svg_path_data.cpp) and the document reader (svg_document.cpp).
+// Pieces shared by the SVG path-data parser (svg_path_data.cpp) and the document reader (svg_reader.cpp and
+// the files of svg_document.hpp).
 #pragma once
 
 #include "rollkin/io/svg_path_data.hpp"

@@ -1,5 +1,5 @@
 // Internal to src/io (not installed): the parsed SVG document and what the parts of the document reader
-// (io/svg_reader.hpp) share. svg_document.cpp maps the document (lengths and units, transform attributes,
+// (io/svg_reader.hpp) share. svg_document_map.cpp maps the document (lengths and units, transform attributes,
 // the root viewport), svg_use_walk.cpp walks what an element draws (<use>, <symbol>, <switch>),
 // svg_selection.cpp chooses one subpath ("subpath", "near"), svg_reader.cpp turns drawn elements into shapes
 // in scene units and holds the entry points.
