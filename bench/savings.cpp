@@ -196,7 +196,7 @@ Row load_and_prepare(long n) {
   std::vector<double> load, prep;
   for (int k = 0; k < 3; ++k) {
     const auto t0 = Clock::now();
-    const std::vector<Vec2d> q = read_point_file(path, 2);
+    const std::vector<Vec2d> q = io::read_point_file(path, 2);
     const auto t1 = Clock::now();
     const SampledProfile<double> p(q);
     load.push_back(std::chrono::duration<double>(t1 - t0).count());
