@@ -1,4 +1,4 @@
-// rollkin_bench_cli: the path a user runs (issue 15, "The path a user runs: the CLI and its output"). All in
+// rollkin_bench_cli: the path a user runs (docs/benchmark.md, "The CLI path"). All in
 // one run, on the paper example over theta2 = -50 .. 100 degrees by 0.001 (150,001 poses):
 //   - hand: the hand-specialised limit (bench/hand_paper.hpp: 2 unknowns, closed-form Jacobian and arc
 //     lengths), in process;

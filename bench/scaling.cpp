@@ -1,5 +1,5 @@
-// build/rollkin_bench_scaling: cost per pose against the number of loops N (issue 15, "Scale with the
-// mechanism"). Families of rollkin/samples/mechanisms.hpp: disk_train(N) (N + 1 pivoted rolling disks, redundant
+// build/rollkin_bench_scaling: cost per pose against the number of loops N (docs/benchmark.md, "Scaling with
+// the mechanism"). Families of rollkin/samples/mechanisms.hpp: disk_train(N) (N + 1 pivoted rolling disks, redundant
 // constraints), four_bar_chain(N) and cam_gear_train(N) (the gear train with a cam and translating follower on
 // each driven disk: rolling, cam, revolute and prismatic pairs, 2N loops); N = 2 .. 256; factorisations Dense (SmallLU / COD), Eigen SparseLU and
 // KLU (solve/sparse_lu.hpp), and Automatic (what SolveData picks). Per case: us per pose (median over

@@ -27,7 +27,7 @@ inline std::string shape_file(const std::string& stem, int n) {
 /// Samples of shapes/<name>, each point multiplied by scale, in the scalar S.
 template <class S> std::vector<Vec2<S>> load_shape(const std::string& name, double scale = 1.0) {
   std::vector<Vec2<S>> out;
-  for (const Vec2<double>& p : read_point_file(shape_path(name), 2, scale)) out.push_back(p.template cast<S>());
+  for (const Vec2<double>& p : io::read_point_file(shape_path(name), 2, scale)) out.push_back(p.template cast<S>());
   return out;
 }
 

@@ -36,7 +36,7 @@ inline std::string ezdxf_script_output(const std::string& script, const std::str
 }
 
 /// The entity a segment belongs to: joint_entities names the one at its start, "A / B" at a join of two.
-inline std::string owner(const DxfContour& c, std::size_t segment) {
+inline std::string owner(const io::DxfContour& c, std::size_t segment) {
   const std::string& j = c.joint_entities[segment];
   const std::size_t slash = j.find(" / ");
   return slash == std::string::npos ? j : j.substr(slash + 3);
@@ -44,7 +44,7 @@ inline std::string owner(const DxfContour& c, std::size_t segment) {
 
 /// The largest distance of e's ezdxf points from the segments of `path` (built from c) that belong to e,
 /// relative to `size`; a test failure when no segment belongs to it.
-inline double entity_distance(const DxfContour& c, const BezierPath<double>& path, const RefEntity& e, double size) {
+inline double entity_distance(const io::DxfContour& c, const BezierPath<double>& path, const RefEntity& e, double size) {
   std::vector<std::size_t> segments;
   for (std::size_t i = 0; i < c.segments.size(); ++i)
     if (owner(c, i) == e.label) segments.push_back(i);

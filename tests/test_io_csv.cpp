@@ -128,8 +128,9 @@ BOOST_AUTO_TEST_CASE(atomic_write) {
 }
 
 BOOST_AUTO_TEST_CASE(numbers_take_the_fewest_digits_that_read_back) {
-  // Independent truth: the least printf precision p for which "%.{p}e" reads back to v. The text written
-  // must read back to v and have exactly p + 1 significant digits (issue 15: shortest round trip).
+  // Independent truth: the least printf precision p for which "%.{p}e" reads back to v. The text written must read
+  // back to v and have exactly p + 1 significant digits (docs/reliability.md, "Outputs at any size": the CSV stays
+  // exact).
   const std::vector<double> values = {0.1, 1.0 / 3.0, -48.971, 2.0 / 3.0 * 1e-7, 123456789.0, 5e-324, 1e23,
                                       0.30000000000000004, 6.02214076e23, -1.7976931348623157e308};
   for (double v : values) {

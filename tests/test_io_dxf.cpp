@@ -25,8 +25,8 @@
 
 using rollkin::BezierPath;
 using rollkin::BezierSegment;
-using rollkin::DxfContour;
-using rollkin::DxfSelection;
+using rollkin::io::DxfContour;
+using rollkin::io::DxfSelection;
 using rollkin::testing::contains;
 using rollkin::testing::input_error_of;
 using V = rollkin::Vec2<double>;
@@ -66,7 +66,7 @@ Answer answer(const std::string& file, const std::string& layer) {
 }
 
 DxfContour read(const std::string& file, const std::string& layer) {
-  return rollkin::read_dxf_contour(kDir + file + ".dxf", DxfSelection{layer, ""});
+  return rollkin::io::read_dxf_contour(kDir + file + ".dxf", DxfSelection{layer, ""});
 }
 
 double extent(const std::vector<V>& pts) {
@@ -111,7 +111,7 @@ DxfContour check_fixture(const std::string& file, const std::string& layer) {
 }
 
 std::string dxf_error(const std::string& text, const std::string& layer) {
-  return input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{layer, ""}, "inline.dxf"); });
+  return input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{layer, ""}, "inline.dxf"); });
 }
 
 /// A minimal DXF: an ENTITIES section holding `entities` (group pairs, one per line pair).
@@ -215,7 +215,7 @@ BOOST_AUTO_TEST_CASE(a_mirrored_polyline_keeps_its_extrusion_over_its_vertices) 
   const std::string vertex = "0\nVERTEX\n8\nL\n10\n";
   const std::string text = minimal_dxf("0\nPOLYLINE\n5\n8A\n8\nL\n66\n1\n70\n0\n210\n0\n220\n0\n230\n-1\n" + vertex + "1\n20\n2\n" +
                                        vertex + "3\n20\n2\n42\n0.5\n" + vertex + "3\n20\n5\n0\nSEQEND\n8\nL\n");
-  const DxfContour c = rollkin::parse_dxf_contour(text, DxfSelection{"L", ""});
+  const DxfContour c = rollkin::io::parse_dxf_contour(text, DxfSelection{"L", ""});
   BOOST_REQUIRE(c.segments.size() >= 2u);
   BOOST_TEST((c.segments.front().points.front() - V(-1, 2)).norm() == 0.0);
   BOOST_TEST((c.segments.back().points.back() - V(-3, 5)).norm() == 0.0);
@@ -262,7 +262,7 @@ BOOST_AUTO_TEST_CASE(bulge_arcs_are_exact_for_every_bulge) {
         const V a = chord * V(0.25, -1.5), b = a + chord * V(std::cos(turn), std::sin(turn));
         const ClosedFormArc arc(a, b, k);
         BOOST_TEST_CONTEXT("bulge " << k << " chord " << chord) {
-          const DxfContour c = rollkin::parse_dxf_contour(bulge_polyline(a, b, k), DxfSelection{"L", ""});
+          const DxfContour c = rollkin::io::parse_dxf_contour(bulge_polyline(a, b, k), DxfSelection{"L", ""});
           BOOST_TEST((c.segments.front().points.front() - a).norm() == 0.0);
           BOOST_TEST((c.segments.back().points.back() - b).norm() == 0.0);
           if (magnitude <= std::numeric_limits<double>::epsilon()) {
@@ -308,7 +308,7 @@ BOOST_AUTO_TEST_CASE(bulge_arcs_of_one_circle_are_one_arc) {
     points.emplace_back(r * std::cos(degrees[i] * to_rad), r * std::sin(degrees[i] * to_rad));
     bulges.push_back(i + 1 < degrees.size() ? std::tan((degrees[i + 1] - degrees[i]) * to_rad / 4) : 0.0);
   }
-  const DxfContour c = rollkin::parse_dxf_contour(polyline_text(points, bulges), DxfSelection{"L", ""});
+  const DxfContour c = rollkin::io::parse_dxf_contour(polyline_text(points, bulges), DxfSelection{"L", ""});
   BOOST_TEST(c.segments.size() == 2u);
   const BezierPath<double> path(c.segments, false);
   double vertices = 0, circle = 0;
@@ -321,8 +321,8 @@ BOOST_AUTO_TEST_CASE(bulge_arcs_of_one_circle_are_one_arc) {
   // An S (the second arc turns the other way) and two tangent arcs of different radii (quarter arcs of radius
   // 1 and 2) keep their pieces.
   const double q = std::tan(M_PI / 8);
-  BOOST_TEST(rollkin::parse_dxf_contour(polyline_text({V(0, 0), V(1, 1), V(2, 2)}, {q, -q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
-  BOOST_TEST(rollkin::parse_dxf_contour(polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(polyline_text({V(0, 0), V(1, 1), V(2, 2)}, {q, -q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
 }
 
 // A bulge so large that the arc's ends are closer than the join tolerance of its own diameter cannot be told
@@ -331,7 +331,7 @@ BOOST_AUTO_TEST_CASE(a_bulge_indistinguishable_from_a_whole_circle_is_refused) {
   const std::string m = dxf_error(bulge_polyline(V(0, 0), V(1, 0), 1e300), "L");
   BOOST_TEST(contains(m, "LWPOLYLINE 7A at vertex 0: bulge 1e+300 makes an arc whose ends are"));
   BOOST_TEST(contains(m, "cannot be told from a whole circle"));
-  BOOST_TEST(rollkin::parse_dxf_contour(bulge_polyline(V(0, 0), V(1, 0), 1e9), DxfSelection{"L", ""}).segments.size() >= 4u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(bulge_polyline(V(0, 0), V(1, 0), 1e9), DxfSelection{"L", ""}).segments.size() >= 4u);
 }
 
 BOOST_AUTO_TEST_CASE(old_style_polyline_from_r12) { check_fixture("polyline_r12", "P2D"); }
@@ -368,7 +368,7 @@ BOOST_AUTO_TEST_CASE(selection_by_handle_case_insensitive) {
   const std::string handle = answer("splines_mm", "SPLINE_CIRCLE").fact("entities").substr(7);
   std::string lower = handle;
   for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  const DxfContour c = rollkin::read_dxf_contour(kDir + "splines_mm.dxf", DxfSelection{"", lower});
+  const DxfContour c = rollkin::io::read_dxf_contour(kDir + "splines_mm.dxf", DxfSelection{"", lower});
   BOOST_TEST(c.closed);
   BOOST_TEST(c.entities.size() == 1u);
   BOOST_TEST(contains(c.description, "handle " + lower));
@@ -393,12 +393,12 @@ BOOST_AUTO_TEST_CASE(entities_libdxflib_does_not_know_are_found_by_the_scan) {
   BOOST_TEST(contains(m, "unsupported entities: MLINE 3C"));
   // A HATCH is never a curve: passed over (an error only when named by its handle).
   const std::string hatch = "0\nHATCH\n5\n3D\n8\nL\n10\n0\n20\n0\n";
-  BOOST_TEST(rollkin::parse_dxf_contour(minimal_dxf(kLine + hatch), DxfSelection{"L", ""}).entities.size() == 1u);
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(kLine + hatch), DxfSelection{"", "3D"}); }),
+  BOOST_TEST(rollkin::io::parse_dxf_contour(minimal_dxf(kLine + hatch), DxfSelection{"L", ""}).entities.size() == 1u);
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(kLine + hatch), DxfSelection{"", "3D"}); }),
                       "HATCH 3D is not a curve"));
   // the same entities on another layer do not matter
   const std::string other = "0\nMLINE\n5\n3C\n8\nNOTES\n10\n0\n20\n0\n";
-  BOOST_TEST(rollkin::parse_dxf_contour(minimal_dxf(kLine + other), DxfSelection{"l", ""}).segments.size() == 1u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(minimal_dxf(kLine + other), DxfSelection{"l", ""}).segments.size() == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(malformed_text_is_refused_with_its_location) {
@@ -438,10 +438,10 @@ BOOST_AUTO_TEST_CASE(bad_geometry_is_refused_naming_the_entity) {
   BOOST_TEST(contains(two, "\"near\""));
   // Angles far outside one turn are reduced, not looped over (a fuzzer's 1e300 degrees must not hang).
   const std::string far_arc = "0\nARC\n5\n6H\n8\nL\n10\n0\n20\n0\n40\n1\n50\n1e300\n51\n-1e300\n";
-  BOOST_TEST(rollkin::parse_dxf_contour(minimal_dxf(far_arc), DxfSelection{"L", ""}).segments.size() >= 1u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(minimal_dxf(far_arc), DxfSelection{"L", ""}).segments.size() >= 1u);
   // An ELLIPSE whose end parameter was rounded just past start + 2 pi is still the full ellipse.
   const std::string rounded = "0\nELLIPSE\n5\n6J\n8\nL\n10\n0\n20\n0\n11\n2\n21\n0\n40\n0.5\n41\n0.5\n42\n6.783185307179587\n";
-  const DxfContour full = rollkin::parse_dxf_contour(minimal_dxf(rounded), DxfSelection{"L", ""});
+  const DxfContour full = rollkin::io::parse_dxf_contour(minimal_dxf(rounded), DxfSelection{"L", ""});
   BOOST_TEST(full.closed);
   BOOST_TEST(full.segments.size() == 4u);
   // Two vertices 1e-14 apart in a drawing of size 1: a piece below the join tolerance (found by fuzzing).
@@ -458,13 +458,13 @@ BOOST_AUTO_TEST_CASE(duplicate_handles_are_an_error_naming_both_entities) {
   const std::string second = "0\nLINE\n5\n2a\n8\nB\n10\n1\n20\n0\n11\n2\n21\n0\n";
   const std::string text = minimal_dxf(first + second);
   for (const DxfSelection& sel : {DxfSelection{"", "2A"}, DxfSelection{"A", ""}, DxfSelection{"B", ""}}) {
-    const std::string m = input_error_of([&] { rollkin::parse_dxf_contour(text, sel, "dup.dxf"); });
+    const std::string m = input_error_of([&] { rollkin::io::parse_dxf_contour(text, sel, "dup.dxf"); });
     BOOST_TEST(contains(m, "dup.dxf:line 19"));
     BOOST_TEST(contains(m, "LINE 2A (line 5, layer \"A\") and LINE 2a (line 19, layer \"B\") have the same handle 2a"));
   }
   // Distinct handles on the same two entities chain as before.
   const std::string distinct = minimal_dxf(first + "0\nLINE\n5\n2B\n8\nA\n10\n1\n20\n0\n11\n2\n21\n0\n");
-  BOOST_TEST(rollkin::parse_dxf_contour(distinct, DxfSelection{"A", ""}).segments.size() == 2u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(distinct, DxfSelection{"A", ""}).segments.size() == 2u);
 }
 
 // A file cut short inside its last entity (no group 0 after it, no ENDSEC, no EOF): libdxflib never completes
@@ -480,7 +480,7 @@ BOOST_AUTO_TEST_CASE(a_file_cut_inside_an_entity_says_so) {
   BOOST_TEST(contains(dxf_error(polyline, "L"), "the file ends inside entity POLYLINE 3A (line 5)"));
   // Complete entities without ENDSEC and EOF are read.
   const std::string no_eof = "0\nSECTION\n2\nENTITIES\n" + kLine + "0\nENDSEC\n";
-  BOOST_TEST(rollkin::parse_dxf_contour(no_eof, DxfSelection{"L", ""}).segments.size() == 1u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(no_eof, DxfSelection{"L", ""}).segments.size() == 1u);
 }
 
 // An extrusion direction within 1e-12 radians of +Z or -Z is +Z or -Z (a written unit normal rounds to
@@ -489,9 +489,9 @@ BOOST_AUTO_TEST_CASE(extrusion_within_round_off_of_z_is_z) {
   auto circle = [](const std::string& n) {
     return minimal_dxf("0\nCIRCLE\n5\n6A\n8\nL\n10\n1\n20\n0\n40\n1\n" + n);
   };
-  const DxfContour plus = rollkin::parse_dxf_contour(circle("230\n0.99999999999999989\n"), DxfSelection{"L", ""});
-  const DxfContour minus = rollkin::parse_dxf_contour(circle("210\n1e-13\n220\n0\n230\n-0.99999999999999989\n"), DxfSelection{"L", ""});
-  const DxfContour reference = rollkin::parse_dxf_contour(circle(""), DxfSelection{"L", ""});
+  const DxfContour plus = rollkin::io::parse_dxf_contour(circle("230\n0.99999999999999989\n"), DxfSelection{"L", ""});
+  const DxfContour minus = rollkin::io::parse_dxf_contour(circle("210\n1e-13\n220\n0\n230\n-0.99999999999999989\n"), DxfSelection{"L", ""});
+  const DxfContour reference = rollkin::io::parse_dxf_contour(circle(""), DxfSelection{"L", ""});
   for (std::size_t i = 0; i < reference.segments.size(); ++i)
     for (std::size_t j = 0; j < 3; ++j) {
       BOOST_TEST((plus.segments[i].points[j] - reference.segments[i].points[j]).norm() == 0.0);
@@ -518,7 +518,7 @@ BOOST_AUTO_TEST_CASE(numbers_are_plain_decimals_read_alike_by_check_and_libdxfli
   for (const std::string& half : {"0.5", "+0.5", ".5", "5e-1", "5.E-1", "  0.50  ", "0.5\r"})
     for (const std::string& two : {"2", "2.", "+2", "0.2e1", "200e-2", "2\r"}) {
       const std::string text = minimal_dxf("0\nLINE\n5\n2A\n8\nL\n10\n0\n20\n0\n11\n" + half + "\n21\n" + two + "\n");
-      const DxfContour c = rollkin::parse_dxf_contour(text, DxfSelection{"L", ""});
+      const DxfContour c = rollkin::io::parse_dxf_contour(text, DxfSelection{"L", ""});
       BOOST_TEST((c.segments[0].points[1] - V(0.5, 2)).norm() == 0.0, half << " " << two);
     }
   auto line_with = [](const std::string& x) { return minimal_dxf("0\nLINE\n5\n2A\n8\nL\n10\n" + x + "\n20\n0\n11\n1\n21\n0\n"); };
@@ -538,7 +538,7 @@ BOOST_AUTO_TEST_CASE(numbers_are_plain_decimals_read_alike_by_check_and_libdxfli
   BOOST_TEST(contains(big, "inline.dxf:line 8: $INSUNITS: group 70 value \"99999999999\" is out of the range of a DXF integer"));
   BOOST_TEST(contains(big, "libdxflib would read it as 1215752191"));
   BOOST_TEST(contains(dxf_error(units("4.0"), "L"), "$INSUNITS: group 70 value \"4.0\" is not an integer ([sign] digits): libdxflib would read it as 4"));
-  BOOST_TEST(rollkin::parse_dxf_contour(units("+4"), DxfSelection{"L", ""}).unit == "mm");
+  BOOST_TEST(rollkin::io::parse_dxf_contour(units("+4"), DxfSelection{"L", ""}).unit == "mm");
   const std::string lw = "0\nLWPOLYLINE\n5\n4A\n8\nL\n90\n0x2\n10\n0\n20\n0\n10\n1\n20\n0\n";
   BOOST_TEST(contains(dxf_error(minimal_dxf(lw), "L"), "LWPOLYLINE 4A: group 90 value \"0x2\" is not an integer"));
   BOOST_TEST(contains(dxf_error("0\nSECTION\n0x2\nENTITIES\n", "L"), "line 3: expected a group code"));
@@ -547,9 +547,9 @@ BOOST_AUTO_TEST_CASE(numbers_are_plain_decimals_read_alike_by_check_and_libdxfli
 BOOST_AUTO_TEST_CASE(selection_errors) {
   const std::string text = minimal_dxf(kLine);
   BOOST_TEST(contains(dxf_error(text, "CAM"), "no entity on layer \"CAM\" in the ENTITIES section (layers with entities: \"L\")"));
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"", "FF"}); }), "no entity with handle FF"));
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"L", "2A"}); }), "exactly one of these"));
-  BOOST_TEST(contains(input_error_of([&] { rollkin::read_dxf_contour(kDir + "missing.dxf", DxfSelection{"L", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{"", "FF"}); }), "no entity with handle FF"));
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{"L", "2A"}); }), "exactly one of these"));
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::read_dxf_contour(kDir + "missing.dxf", DxfSelection{"L", ""}); }),
                       "cannot open the DXF file"));
 }
 
@@ -567,7 +567,7 @@ BOOST_AUTO_TEST_CASE(rejected_inputs_leave_no_file_open) {
   const std::size_t before = open_descriptors();
   for (int k = 0; k < 50; ++k)
     for (const std::string& text : {bad_value, bad_count}) {
-      const std::string message = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{}, "bad.dxf"); });
+      const std::string message = input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{}, "bad.dxf"); });
       BOOST_TEST(contains(message, "bad.dxf"));
     }
   BOOST_TEST(open_descriptors() == before);
@@ -579,7 +579,7 @@ BOOST_AUTO_TEST_CASE(rejected_inputs_leave_no_file_open) {
 BOOST_AUTO_TEST_CASE(array_counts_are_bounded_in_every_section) {
   for (const char* section : {"BLOCKS", "ENTITM-rES"}) {
     const std::string text = std::string("0\nSECTION\n2\n") + section + "\n0\nSPLINE\n71\n3\n74\n1056964608\n0\nENDSEC\n0\nEOF\n";
-    const std::string message = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{}, "fit.dxf"); });
+    const std::string message = input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{}, "fit.dxf"); });
     BOOST_TEST(contains(message, "fit.dxf"));
     BOOST_TEST(contains(message, "line 10"));  // the value line of group 74
     // (in BLOCKS, whose entities are recorded for INSERTs, the SPLINE is named by its line)
@@ -590,6 +590,6 @@ BOOST_AUTO_TEST_CASE(array_counts_are_bounded_in_every_section) {
   }
   // A LEADER's vertex count (group 76) in ENTITIES, named by its handle.
   const std::string leader = "0\nSECTION\n2\nENTITIES\n0\nLEADER\n5\n4C\n76\n1500000000\n0\nENDSEC\n0\nEOF\n";
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(leader, DxfSelection{}, "l.dxf"); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(leader, DxfSelection{}, "l.dxf"); }),
                       "LEADER 4C: group 76 count 1500000000 is impossible"));
 }

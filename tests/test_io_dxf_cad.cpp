@@ -30,8 +30,8 @@
 #include <vector>
 
 using rollkin::BezierPath;
-using rollkin::DxfContour;
-using rollkin::DxfSelection;
+using rollkin::io::DxfContour;
+using rollkin::io::DxfSelection;
 using rollkin::testing::contains;
 using rollkin::testing::input_error_of;
 using V = rollkin::Vec2<double>;
@@ -101,11 +101,11 @@ std::vector<RefCase> ezdxf_cases(const std::string& dir) {
 }
 
 double compare(const RefCase& ref) {
-  const DxfContour c = rollkin::read_dxf_contour(ref.file, ref.selection);
+  const DxfContour c = rollkin::io::read_dxf_contour(ref.file, ref.selection);
   if (ref.selection.handles.size() > 1) {  // the same chain, walked alike, whatever the order of the handles
     DxfSelection reversed = ref.selection;
     std::reverse(reversed.handles.begin(), reversed.handles.end());
-    const DxfContour d = rollkin::read_dxf_contour(ref.file, reversed);
+    const DxfContour d = rollkin::io::read_dxf_contour(ref.file, reversed);
     BOOST_TEST(d.entities == c.entities);
     BOOST_TEST((d.segments.front().points == c.segments.front().points));
   }
@@ -142,7 +142,7 @@ BOOST_AUTO_TEST_CASE(cad_drawings_read_as_ezdxf_draws_them) {
   for (const RefCase& ref : cases) {
     BOOST_TEST_CONTEXT(std::filesystem::path(ref.file).filename().string() << " " << ref.select_text) {
       if (!ref.errors.empty()) {
-        const std::string message = input_error_of([&] { rollkin::read_dxf_contour(ref.file, ref.selection); });
+        const std::string message = input_error_of([&] { rollkin::io::read_dxf_contour(ref.file, ref.selection); });
         BOOST_TEST_MESSAGE(ref.select_text << ": " << message);
         for (const std::string& e : ref.errors) BOOST_TEST(contains(message, e), "\"" << e << "\" not in: " << message);
         continue;
@@ -159,13 +159,13 @@ BOOST_AUTO_TEST_CASE(cad_drawings_read_as_ezdxf_draws_them) {
 BOOST_AUTO_TEST_CASE(the_zero_length_line_is_dropped_and_noted) {
   const std::string text = minimal_dxf(kLine + "0\nLINE\n5\n2B\n8\nL\n10\n1\n20\n0\n11\n1\n21\n0\n" +
                                        "0\nLINE\n5\n2C\n8\nL\n10\n1\n20\n0\n11\n1\n21\n1\n");
-  const DxfContour c = rollkin::parse_dxf_contour(text, DxfSelection{"L", ""});
+  const DxfContour c = rollkin::io::parse_dxf_contour(text, DxfSelection{"L", ""});
   BOOST_TEST(c.entities.size() == 2u);
   BOOST_REQUIRE(c.notes.size() == 1u);
   BOOST_TEST(c.notes[0] == "LINE 2B has zero length: dropped");
   BOOST_TEST(contains(c.description, "LINE 2B has zero length: dropped"));
   // alone, it is an error
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"", "2B"}); }), "LINE 2B has zero length"));
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{"", "2B"}); }), "LINE 2B has zero length"));
 }
 
 // A VIEWPORT's group 90 (status flags, 557152) and a MULTILEADER's (-1056964608) are not counts: the file was
@@ -176,34 +176,34 @@ BOOST_AUTO_TEST_CASE(only_what_is_used_is_checked) {
   const std::string leader = "0\nMULTILEADER\n5\n3E\n8\nL\n90\n-1056964608\n90\n2147483647\n";
   const std::string bad = "0\nLINE\n5\n50\n8\nOTHER\n10\n1,5\n20\n0\n11\n1\n21\n0\n";
   const std::string text = minimal_dxf(viewport + leader + bad + kLine);
-  const DxfContour c = rollkin::parse_dxf_contour(text, DxfSelection{"L", ""});
+  const DxfContour c = rollkin::io::parse_dxf_contour(text, DxfSelection{"L", ""});
   BOOST_TEST(c.entities.size() == 1u);
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"OTHER", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{"OTHER", ""}); }),
                       "LINE 50: group 10 value \"1,5\" is not a decimal number"));
   // Text after 0 EOF is not DXF: ignored, whatever it is.
   const std::string tail = minimal_dxf(kLine) + "garbage\nmore garbage\n0\nLINE\n";
-  BOOST_TEST(rollkin::parse_dxf_contour(tail, DxfSelection{"L", ""}).segments.size() == 1u);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(tail, DxfSelection{"L", ""}).segments.size() == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(extrusion_round_off_and_spline_normal_zero) {
   const std::string arc = "0\nARC\n5\n6A\n8\nL\n10\n0\n20\n0\n40\n1\n50\n0\n51\n90\n210\n0\n220\n0\n230\n0.9999999999999998\n";
-  const DxfContour c = rollkin::parse_dxf_contour(minimal_dxf(arc), DxfSelection{"L", ""});
+  const DxfContour c = rollkin::io::parse_dxf_contour(minimal_dxf(arc), DxfSelection{"L", ""});
   BOOST_TEST((c.segments.front().points.front() - V(1, 0)).norm() < 1e-15);
   BOOST_TEST((c.segments.back().points.back() - V(0, 1)).norm() < 1e-15);
   // a tilted one is printed exactly, never as (0, 0, 1)
   const std::string tilted = "0\nARC\n5\n6B\n8\nL\n10\n0\n20\n0\n40\n1\n50\n0\n51\n90\n210\n1e-11\n220\n0\n230\n0.9999999999999998\n";
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(tilted), DxfSelection{"L", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(tilted), DxfSelection{"L", ""}); }),
                       "ARC 6B has extrusion direction (1e-11, 0, 0.9999999999999998)"));
   const std::string spline = "0\nSPLINE\n5\n6C\n8\nL\n210\n0\n220\n0\n230\n0\n70\n8\n71\n1\n72\n4\n73\n2\n40\n0\n40\n0\n40\n1\n40\n1\n"
                              "10\n0\n20\n0\n30\n0\n10\n3\n20\n4\n30\n0\n";
-  const DxfContour s = rollkin::parse_dxf_contour(minimal_dxf(spline), DxfSelection{"L", ""});
+  const DxfContour s = rollkin::io::parse_dxf_contour(minimal_dxf(spline), DxfSelection{"L", ""});
   BOOST_TEST((s.segments.back().points.back() - V(3, 4)).norm() == 0);
 }
 
 BOOST_AUTO_TEST_CASE(a_spline_that_is_only_repeated_points_names_them) {
   const std::string spline = "0\nSPLINE\n5\n6D\n8\nL\n70\n8\n71\n1\n72\n4\n73\n2\n40\n0\n40\n0\n40\n1\n40\n1\n"
                              "10\n2\n20\n3\n30\n0\n10\n2\n20\n3\n30\n0\n";
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(spline), DxfSelection{"L", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(spline), DxfSelection{"L", ""}); }),
                       "SPLINE 6D has zero length: every span is a single point (repeated control points 0 = 1)"));
 }
 
@@ -212,31 +212,31 @@ BOOST_AUTO_TEST_CASE(near_ties_branches_and_selector_errors) {
   const std::string two = kLine + "0\nLINE\n5\n2B\n8\nL\n10\n0\n20\n2\n11\n1\n21\n2\n";
   DxfSelection midway;
   midway.near = V(0.5, 1);
-  const std::string tie = input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(two), midway); });
+  const std::string tie = input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(two), midway); });
   BOOST_TEST(contains(tie, "two chains pass about equally near (0.5, 1)"));
   BOOST_TEST(contains(tie, "LINE 2A"));
   BOOST_TEST(contains(tie, "LINE 2B"));
   DxfSelection nearer;
   nearer.near = V(0.5, 1.2);
-  BOOST_TEST(rollkin::parse_dxf_contour(minimal_dxf(two), nearer).entities.front() == "LINE 2B");
+  BOOST_TEST(rollkin::io::parse_dxf_contour(minimal_dxf(two), nearer).entities.front() == "LINE 2B");
   // handles of two separate chains
   DxfSelection both;
   both.handles = {"2A", "2B"};
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(two), both); }), "form 2 chains, not one"));
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(two), both); }), "form 2 chains, not one"));
   // a branch inside the selected chain names the entities meeting there
   const std::string branch = kLine + "0\nLINE\n5\n2C\n8\nL\n10\n1\n20\n0\n11\n2\n21\n0\n0\nLINE\n5\n2D\n8\nL\n10\n1\n20\n0\n11\n1\n21\n1\n";
-  const std::string b = input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(branch), DxfSelection{"L", ""}); });
+  const std::string b = input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(branch), DxfSelection{"L", ""}); });
   BOOST_TEST(contains(b, "3 entity ends meet at (1, 0): LINE 2A (end), LINE 2C (start) and LINE 2D (start)"));
   // an INSERT of a block the file does not define
   const std::string insert = "0\nINSERT\n5\n70\n8\nL\n2\nNOPE\n10\n0\n20\n0\n";
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(minimal_dxf(insert), DxfSelection{"L", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(minimal_dxf(insert), DxfSelection{"L", ""}); }),
                       "INSERT 70 inserts block \"NOPE\", which the BLOCKS section does not define"));
 }
 
 // Blocks nested deeper than the bound (each inserting the next) are an error, not a stack overflow.
 BOOST_AUTO_TEST_CASE(insert_depth_is_bounded) {
   std::string blocks = "0\nSECTION\n2\nBLOCKS\n";
-  const int depth = rollkin::kDxfMaxInsertDepth + 5;
+  const int depth = rollkin::io::kDxfMaxInsertDepth + 5;
   for (int i = 0; i < depth; ++i) {
     blocks += "0\nBLOCK\n8\n0\n2\nB" + std::to_string(i) + "\n70\n0\n10\n0\n20\n0\n";
     if (i + 1 < depth) blocks += "0\nINSERT\n8\n0\n2\nB" + std::to_string(i + 1) + "\n10\n0\n20\n0\n";
@@ -245,14 +245,14 @@ BOOST_AUTO_TEST_CASE(insert_depth_is_bounded) {
   }
   blocks += "0\nENDSEC\n";
   const std::string text = blocks + "0\nSECTION\n2\nENTITIES\n0\nINSERT\n5\n99\n8\nL\n2\nB0\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n";
-  const std::string m = input_error_of([&] { rollkin::parse_dxf_contour(text, DxfSelection{"L", ""}); });
+  const std::string m = input_error_of([&] { rollkin::io::parse_dxf_contour(text, DxfSelection{"L", ""}); });
   BOOST_TEST(contains(m, "INSERTs deep; at most 32 are read"));
   BOOST_TEST(contains(m, "in INSERT 99"));
   // a MINSERT of 32767 x 32767 copies of an empty block: refused at once, not looped over
   const std::string empty = "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nE\n70\n0\n10\n0\n20\n0\n0\nENDBLK\n8\n0\n0\nENDSEC\n";
   const std::string grid = empty + "0\nSECTION\n2\nENTITIES\n0\nINSERT\n5\n98\n8\nL\n2\nE\n10\n0\n20\n0\n70\n32767\n71\n32767\n"
                            "44\n1\n45\n1\n0\nENDSEC\n0\nEOF\n";
-  BOOST_TEST(contains(input_error_of([&] { rollkin::parse_dxf_contour(grid, DxfSelection{"L", ""}); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::parse_dxf_contour(grid, DxfSelection{"L", ""}); }),
                       "INSERT 98 places more than 1000000 entities and copies"));
 }
 
@@ -280,7 +280,7 @@ BOOST_AUTO_TEST_CASE(listed_chains_are_selected_by_their_selectors) {
         if (j.contains("layer")) sel.layer = j.at("layer").get<std::string>();
         if (j.contains("near")) sel.near = V(j.at("near")[0].get<double>(), j.at("near")[1].get<double>()), ++near_selectors;
         if (j.contains("handles")) sel.handles = j.at("handles").get<std::vector<std::string>>(), ++handle_selectors;
-        const DxfContour c = rollkin::read_dxf_contour(file, sel);
+        const DxfContour c = rollkin::io::read_dxf_contour(file, sel);
         BOOST_TEST(c.entities == l.entities, l.selector << " selects " << c.description);
         BOOST_REQUIRE(c.segments.size() == l.segments.size());
         for (std::size_t i = 0; i < c.segments.size(); ++i) BOOST_TEST((c.segments[i].points == l.segments[i].points));

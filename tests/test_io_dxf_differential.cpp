@@ -33,8 +33,8 @@
 #include <vector>
 
 using rollkin::BezierPath;
-using rollkin::DxfContour;
-using rollkin::DxfSelection;
+using rollkin::io::DxfContour;
+using rollkin::io::DxfSelection;
 using V = rollkin::Vec2<double>;
 
 namespace {
@@ -92,7 +92,7 @@ struct Worst {
 /// Compares one chain; returns its largest relative distance and length difference.
 void compare(const RefChain& ref, Worst& worst) {
   BOOST_TEST_CONTEXT(ref.file << " layer " << ref.layer) {
-    const DxfContour c = rollkin::read_dxf_contour(ref.file, DxfSelection{ref.layer, ""});
+    const DxfContour c = rollkin::io::read_dxf_contour(ref.file, DxfSelection{ref.layer, ""});
     BOOST_REQUIRE_EQUAL(c.entities.size(), ref.entities.size());
     V lo = ref.entities[0].points[0], hi = lo;
     double polygon = 0;

@@ -16,7 +16,7 @@
 namespace {
 
 using rollkin::BezierSegment;
-using rollkin::DxfContour;
+using rollkin::io::DxfContour;
 using rollkin::SampledProfile;
 using rollkin::SplineOptions;
 using V = rollkin::Vec2<double>;
@@ -42,7 +42,7 @@ V bezier_point(const BezierSegment<double>& s, double t) {
 
 DxfContour written_and_read(const SampledProfile<double>& p, const std::string& unit) {
   const std::string text = rollkin::io::dxf_text({rollkin::io::spline_of(p, "CENTRODE")}, unit);
-  return rollkin::parse_dxf_contour(text, {"CENTRODE", ""}, "written.dxf");
+  return rollkin::io::parse_dxf_contour(text, {"CENTRODE", ""}, "written.dxf");
 }
 
 /// Largest distance between each read-back segment and the spline's span, at t = 0, 1/3, 2/3, 1.
@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(a_closed_sampled_contour_reads_back_closed_and_without_corn
 BOOST_AUTO_TEST_CASE(the_polyline_form_keeps_its_points_and_an_unknown_unit_is_unitless) {
   const std::vector<V> q{{0, 0}, {1, 0.5}, {2, 0}};
   const std::string text = rollkin::io::dxf_text({rollkin::io::polyline_spline(q, "P")}, "furlong");
-  const DxfContour c = rollkin::parse_dxf_contour(text, {"P", ""}, "polyline.dxf");
+  const DxfContour c = rollkin::io::parse_dxf_contour(text, {"P", ""}, "polyline.dxf");
   BOOST_TEST(c.insunits == 0);
   BOOST_TEST_REQUIRE(c.segments.size() == 2u);
   for (std::size_t k = 0; k < 2; ++k) {

@@ -11,7 +11,7 @@
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/io/scene.hpp"
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_reader.hpp"
 #include "rollkin/reference.hpp"
 
 #include <fcntl.h>
@@ -80,9 +80,9 @@ std::vector<Reader> readers(const fs::path& dir) {
   };
   return {
       {"scene", "the scene file", [](const std::string& f) { rollkin::io::load_scene(f); }},
-      {"point file", "the point file", [](const std::string& f) { rollkin::read_point_file(f, 4); }},
-      {"SVG", "the SVG file", [](const std::string& f) { rollkin::read_svg_shape(f, "cam"); }},
-      {"DXF", "the DXF file", [](const std::string& f) { rollkin::read_dxf_contour(f, rollkin::DxfSelection{"CAM", ""}); }},
+      {"point file", "the point file", [](const std::string& f) { rollkin::io::read_point_file(f, 4); }},
+      {"SVG", "the SVG file", [](const std::string& f) { rollkin::io::read_svg_shape(f, "cam"); }},
+      {"DXF", "the DXF file", [](const std::string& f) { rollkin::io::read_dxf_contour(f, rollkin::io::DxfSelection{"CAM", ""}); }},
       {"reference table", "the reference file", [](const std::string& f) { rollkin::read_reference_csv(f); }},
       {"scene's samples contour", "the point file",
        scene_reading(R"({"name": "c", "type": "samples", "file": "FILE"})")},
@@ -121,7 +121,7 @@ BOOST_AUTO_TEST_CASE(every_reader_refuses_a_directory_and_a_fifo_before_opening_
 
 BOOST_AUTO_TEST_CASE(devices_are_named_and_regular_files_and_links_to_them_pass) {
   BOOST_TEST(rollkin::io::non_regular_kind("/dev/null") == "a character device");
-  BOOST_TEST(contains(input_error_of([] { rollkin::read_point_file("/dev/zero", 4); }),
+  BOOST_TEST(contains(input_error_of([] { rollkin::io::read_point_file("/dev/zero", 4); }),
                       "/dev/zero: the point file is a character device, not a regular file"));
   const fs::path dir = rollkin::testing::scratch_dir("io_input_file");
   const std::string file = rollkin::testing::write_text(dir / "points.txt", "0 0\n1 0\n1 1\n0 1\n");
@@ -129,9 +129,9 @@ BOOST_AUTO_TEST_CASE(devices_are_named_and_regular_files_and_links_to_them_pass)
   const fs::path link = dir / "points_link.txt";
   fs::remove(link);
   fs::create_symlink(file, link);
-  BOOST_TEST(rollkin::read_point_file(link.string(), 4).size() == 4u);
+  BOOST_TEST(rollkin::io::read_point_file(link.string(), 4).size() == 4u);
   // A missing file is not refused here: opening it says why.
   BOOST_TEST(rollkin::io::non_regular_kind((dir / "missing.txt").string()).empty());
-  BOOST_TEST(contains(input_error_of([&] { rollkin::read_point_file((dir / "missing.txt").string(), 4); }),
+  BOOST_TEST(contains(input_error_of([&] { rollkin::io::read_point_file((dir / "missing.txt").string(), 4); }),
                       "cannot open the point file: No such file or directory"));
 }

@@ -212,7 +212,7 @@ BOOST_AUTO_TEST_CASE(several_outputs_are_written_all_or_nothing) {
 
 BOOST_AUTO_TEST_CASE(streamed_outputs_are_written_in_blocks_all_or_nothing) {
   // A streamed output of several blocks arrives whole; one whose writer fails leaves every target as it
-  // was and no temporary behind, also for the outputs already streamed (issue 15: --csv streamed).
+  // was and no temporary behind, also for the outputs already streamed (docs/reliability.md, "Outputs at any size").
   const fs::path dir = fresh_dir("streamed");
   write_text(dir / "a.csv", "old a");
   write_text(dir / "b.csv", "old b");

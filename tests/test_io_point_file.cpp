@@ -9,8 +9,8 @@
 #include <fstream>
 
 using rollkin::InputError;
-using rollkin::parse_point_text;
-using rollkin::read_point_file;
+using rollkin::io::parse_point_text;
+using rollkin::io::read_point_file;
 
 namespace {
 
@@ -142,7 +142,7 @@ BOOST_AUTO_TEST_CASE(long_or_control_character_lines_are_quoted_readably) {
 }
 
 BOOST_AUTO_TEST_CASE(samples_come_with_their_lines) {
-  const auto s = rollkin::read_point_samples(write_temp("lines.txt", "# c\nx y\n0 0\n\n1 1 # c\n2 0\n"), 2);
+  const auto s = rollkin::io::read_point_samples(write_temp("lines.txt", "# c\nx y\n0 0\n\n1 1 # c\n2 0\n"), 2);
   BOOST_TEST(s.points.size() == 3u);
   BOOST_TEST(s.lines == (std::vector<std::size_t>{3, 5, 6}), boost::test_tools::per_element());
 }

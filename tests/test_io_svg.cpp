@@ -8,7 +8,9 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
-#include "rollkin/io/svg.hpp"
+#include "rollkin/io/svg_chart.hpp"
+#include "rollkin/io/svg_drawing.hpp"
+#include "rollkin/io/svg_markup.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_path_data.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,9 @@
 
 using rollkin::BezierPath;
 using rollkin::InputError;
-using rollkin::parse_svg_path_data;
-using rollkin::SvgPathOptions;
-using rollkin::SvgSubpath;
+using rollkin::io::parse_svg_path_data;
+using rollkin::io::SvgPathOptions;
+using rollkin::io::SvgSubpath;
 using V = rollkin::Vec2<double>;
 
 namespace {
@@ -174,8 +174,9 @@ BOOST_AUTO_TEST_CASE(path_data_errors_name_the_command_and_offset) {
   BOOST_TEST(contains(error_for("m 1e308 0 l 1e308 0"), "command 2 (l), d offset 19: the coordinates overflow"));
 }
 
-// Defect 9 (issue 11): a path closed by Z after a last point equal to the first up to round-off used to
-// keep a closing segment of length 4e-16, which BezierPath rejects as "segment 4 is degenerate".
+// A defect the fuzzing found (docs/reliability.md, "How it is tested"): a path closed by Z after a last point equal
+// to the first up to round-off used to keep a closing segment of length 4e-16, which BezierPath rejects as "segment 4
+// is degenerate".
 BOOST_AUTO_TEST_CASE(closing_point_equal_to_the_first_to_round_off_is_dropped) {
   const auto subs = parse("M 3 2 A 2 2 0 1 1 -1 2 A 2 2 0 1 1 3.0000000000000004 2 Z");
   BOOST_TEST(subs.size() == 1u);

@@ -6,7 +6,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_reader.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -19,10 +19,10 @@
 using rollkin::BezierPath;
 using rollkin::BezierSegment;
 using rollkin::InputError;
-using rollkin::read_svg_shape;
-using rollkin::read_svg_shape_from_text;
-using rollkin::SvgReadOptions;
-using rollkin::SvgShape;
+using rollkin::io::read_svg_shape;
+using rollkin::io::read_svg_shape_from_text;
+using rollkin::io::SvgReadOptions;
+using rollkin::io::SvgShape;
 using rollkin::testing::contains;
 using V = rollkin::Vec2<double>;
 namespace fs = std::filesystem;
@@ -196,7 +196,7 @@ BOOST_AUTO_TEST_CASE(units_of_the_fixtures) {
   const double a = -M_PI / 6;
   const V centre_svg = V(50, 20) + V(std::cos(a) * 22 - std::sin(a) * 6, std::sin(a) * 22 + std::cos(a) * 6) +
                        V(-12.5, 30.25);
-  const BezierPath<double> disk = rollkin::svg_bezier_path(mm);
+  const BezierPath<double> disk = rollkin::io::svg_bezier_path(mm);
   for (int k = 0; k <= 200; ++k)
     BOOST_TEST(std::abs((disk.jet(k / 50.0, 0).p - V(centre_svg.x(), -centre_svg.y())).norm() - 6.25) < 1e-12 * 6.25);
   // px_meet.svg: px declared; unitless_none.svg: nothing declared, numbers kept even with a scene unit.
@@ -229,7 +229,7 @@ BOOST_AUTO_TEST_CASE(circle_under_scaled_rotated_group_is_the_exact_circle) {
   // rotate(30) then scale(2): centre 2 R(30deg) (3, 4), radius 10; flip_y negates y.
   const double a = M_PI / 6;
   const V centre(2 * (std::cos(a) * 3 - std::sin(a) * 4), -2 * (std::sin(a) * 3 + std::cos(a) * 4));
-  const BezierPath<double> circle = rollkin::svg_bezier_path(s);
+  const BezierPath<double> circle = rollkin::io::svg_bezier_path(s);
   double worst = 0;
   for (int k = 0; k <= 400; ++k)
     worst = std::max(worst, std::abs((circle.jet(k / 100.0, 0).p - centre).norm() - 10) / 10);
@@ -265,7 +265,7 @@ BOOST_AUTO_TEST_CASE(transform_lists_compose_right_to_left) {
   BOOST_TEST((nested.segments[0].points[1] - V(3, 3)).norm() < 1e-15);
 }
 
-// ---- corners (issue 12) ---------------------------------------------------------------------------------
+// ---- corners (docs/scene_format.md, "Corners") ------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(corners_are_listed_where_the_tangent_jumps) {
   SvgReadOptions o;
@@ -295,7 +295,7 @@ BOOST_AUTO_TEST_CASE(corners_are_listed_where_the_tangent_jumps) {
   BOOST_TEST(path.corners[0].segment == 2u);
   BOOST_TEST(path.corners[0].where == "where command 3 (S) meets command 4 (L)");
   // The contour built from a shape with corners is split at the same joints.
-  const BezierPath<double> contour = rollkin::svg_bezier_path(path);
+  const BezierPath<double> contour = rollkin::io::svg_bezier_path(path);
   BOOST_REQUIRE_EQUAL(contour.corners().size(), 1u);
   BOOST_TEST(contour.corners()[0].piece == path.corners[0].segment);
   BOOST_TEST(std::abs(contour.corners()[0].turn * 180 / M_PI - path.corners[0].turn_deg) < 1e-12);
@@ -309,7 +309,7 @@ BOOST_AUTO_TEST_CASE(closed_path_with_round_off_duplicate_end_is_a_usable_contou
   BOOST_TEST(s.segments.size() == 4u);
   BOOST_TEST(s.closed);
   BOOST_TEST(s.corners.empty());
-  BOOST_CHECK_NO_THROW(rollkin::svg_bezier_path(s));
+  BOOST_CHECK_NO_THROW(rollkin::io::svg_bezier_path(s));
   // polygon repeating its first point: no zero-length closing edge either
   const SvgShape tri = read_svg_shape_from_text(doc("<polygon id=\"t\" points=\"0,0 4,0 0,3 0,0\"/>"), "t", {}, "c.svg");
   BOOST_TEST(tri.segments.size() == 3u);
@@ -327,7 +327,7 @@ BOOST_AUTO_TEST_CASE(short_pieces_end_where_svgelements_ends_them) {
   rollkin::testing::write_text(dir / "short_steps.svg", doc("<path id=\"p\" d=\"" + d + "\"/>"));
   SvgReadOptions o;
   o.flip_y = false;
-  const BezierPath<double> mine = rollkin::svg_bezier_path(read_svg_shape((dir / "short_steps.svg").string(), "p", o));
+  const BezierPath<double> mine = rollkin::io::svg_bezier_path(read_svg_shape((dir / "short_steps.svg").string(), "p", o));
   double steps = 0, line = 0;  // the short steps summed apart from the long line, not lost against its 500
   V end(0, 0);
   for (const RefSegment& r : svgelements_segments((dir / "short_steps.svg").string(), "p", "96")) {
@@ -345,15 +345,16 @@ BOOST_AUTO_TEST_CASE(short_pieces_end_where_svgelements_ends_them) {
 // ---- compatibility entry point used by the scene reader ---------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(read_svg_path_applies_group_transforms) {
-  // The silently wrong answer of issue 12: a transform on an enclosing <g> used to be ignored.
+  // A silently wrong answer once (docs/scene_format.md, "SVG contours", step 1): a transform on an enclosing <g>
+  // used to be ignored.
   const std::string file = rollkin::testing::write_text(
       rollkin::testing::scratch_dir("io_svg_reader") / "group.svg",
       doc("<g transform=\"translate(5,0)\"><path id=\"p\" d=\"M 0 0 L 1 1\"/></g>"));
-  const auto subs = rollkin::read_svg_path(file, "p", {false, 2.0});
+  const auto subs = rollkin::io::read_svg_path(file, "p", {false, 2.0});
   BOOST_TEST(subs.size() == 1u);
   BOOST_TEST((subs[0].segments[0].points[0] - V(10, 0)).norm() == 0);
   BOOST_TEST((subs[0].segments[0].points[1] - V(12, 2)).norm() == 0);
-  BOOST_TEST(contains(rollkin::testing::input_error_of([] { rollkin::read_svg_path("/nonexistent/x.svg", "p"); }),
+  BOOST_TEST(contains(rollkin::testing::input_error_of([] { rollkin::io::read_svg_path("/nonexistent/x.svg", "p"); }),
                       "/nonexistent/x.svg: cannot open the SVG file"));
 }
 
@@ -646,7 +647,7 @@ double control_point_difference(const std::vector<BezierSegment<double>>& a, con
 BOOST_AUTO_TEST_CASE(clones_symbols_and_compound_paths_match_svgelements_to_1e_12) {
   SvgReadOptions o = unflipped();
   o.metres_per_scene_unit = kMetresPerPx;
-  const std::vector<SvgShape> mine = rollkin::read_svg_shapes(kData + "clones.svg", "", o);
+  const std::vector<SvgShape> mine = rollkin::io::read_svg_shapes(kData + "clones.svg", "", o);
   const auto ref = svgelements_subpaths("clones.svg");
   BOOST_REQUIRE_EQUAL(mine.size(), ref.size());
   BOOST_REQUIRE_EQUAL(mine.size(), 11u);  // plate 3, two teeth 2 + 2, a copy of the flank 1, marks 2, frame 1
@@ -781,7 +782,7 @@ BOOST_AUTO_TEST_CASE(rect_with_one_zero_radius_has_square_corners) {
         BOOST_TEST(r.segments[k].points.back() == corners[(k + 1) % 4]);
       }
       BOOST_TEST(r.corners.size() == 4u);
-      BOOST_TEST(std::abs(rollkin::svg_bezier_path(r).total_length() - 160.0) < 1e-12);
+      BOOST_TEST(std::abs(rollkin::io::svg_bezier_path(r).total_length() - 160.0) < 1e-12);
     }
   }
 }

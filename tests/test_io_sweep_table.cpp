@@ -1,6 +1,6 @@
-// The --csv of a sweep (io/sweep_table.hpp) streamed row by row (issue 15): the same bytes as the whole
-// table's csv(), and every number reads back (strtod) to exactly the double of the table, which for a length
-// variable is the solver's own value.
+// The --csv of a sweep (io/sweep_table.hpp) streamed row by row (docs/reliability.md, "Outputs at any size"): the
+// same bytes as the whole table's csv(), and every number reads back (strtod) to exactly the double of the table,
+// which for a length variable is the solver's own value.
 #define BOOST_TEST_MODULE io_sweep_table
 #include <boost/test/unit_test.hpp>
 

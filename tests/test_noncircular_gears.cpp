@@ -138,7 +138,7 @@ BOOST_AUTO_TEST_CASE(shipped_shape_files_are_valid_contours) {
   for (int n : kCounts)
     for (const char* stem : {"ellipse", "noncircular_gear1", "noncircular_gear2"}) files.emplace_back(shape_file(stem, n), true);
   for (const auto& [name, closed] : files) {
-    const auto pts = read_point_file(shape_path(name), 3);
+    const auto pts = io::read_point_file(shape_path(name), 3);
     const ValidationReport rep = validate_polyline(pts, closed, MaterialSide::Left, 1e-9);
     BOOST_TEST(!rep.has_errors(), name);
     BOOST_TEST(rep.issues.empty(), name);

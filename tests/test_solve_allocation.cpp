@@ -1,9 +1,9 @@
-// Memory of a sweep (issue 15): a sweep's results are columns sized once (solve/sweep_result.hpp), so the
-// per-pose work allocates nothing. Counted with a replacement of the global operator new in this test
-// executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of the same
-// range that reaches the dead point at the end of the paper example's motion) must not grow with the poses;
-// nor those of a summary whose poses are interpolated between strides (dense output), nor those of writing
-// a sweep's CSV (io/sweep_table.hpp).
+// Memory of a sweep (docs/benchmark.md, "The CLI path"): a sweep's results are columns sized once
+// (solve/sweep_result.hpp), so the per-pose work allocates nothing. Counted with a replacement of the global operator
+// new in this test executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of
+// the same range that reaches the dead point at the end of the paper example's motion) must not grow with the poses;
+// nor those of a summary whose poses are interpolated between strides (dense output), nor those of writing a sweep's
+// CSV (io/sweep_table.hpp).
 #define BOOST_TEST_MODULE solve_allocation
 #include <boost/test/unit_test.hpp>
 

@@ -1,4 +1,4 @@
-// Bounded work and scale invariance (issue 11, defect 5): every step and tolerance of the solve layer is
+// Bounded work and scale invariance (docs/reliability.md, "Numbers"): every step and tolerance of the solve layer is
 // relative to the scene's size, so a scene scaled by 1e-6 or 1e6 costs the same Newton evaluations and gives the
 // same angles; the sub-step estimate that bounds a request's work is checked against its definition.
 #define BOOST_TEST_MODULE solve_scale

@@ -1,6 +1,6 @@
-// Singular poses met by the continuation (issue 11, defects 1, 6 and 8): a scene with nothing to solve, a
-// bifurcation where two branches meet (crossed four-bar), and a cam pair stepped exactly through a singular
-// pose. Every value is checked against a closed form derived here from the geometry, not from the solver.
+// Singular poses met by the continuation (docs/reliability.md, "Numbers": every pose carries a status): a scene with
+// nothing to solve, a bifurcation where two branches meet (crossed four-bar), and a cam pair stepped exactly through
+// a singular pose. Every value is checked against a closed form derived here from the geometry, not from the solver.
 #define BOOST_TEST_MODULE solve_singular
 #include <boost/test/unit_test.hpp>
 

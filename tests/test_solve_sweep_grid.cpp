@@ -1,6 +1,6 @@
-// The input grid of a sweep (solve/sweep_grid.hpp) is the decimal grid the user wrote (issue 15): value k is
-// the double nearest to the decimal from + k step. The truth is independent of the code under test: the
-// decimal text of each value written with integer arithmetic and read by strtod (correctly rounded).
+// The input grid of a sweep (solve/sweep_grid.hpp) is the decimal grid the user wrote (docs/scene_format.md, "Inputs
+// and sweep"): value k is the double nearest to the decimal from + k step. The truth is independent of the code under
+// test: the decimal text of each value written with integer arithmetic and read by strtod (correctly rounded).
 #define BOOST_TEST_MODULE solve_sweep_grid
 #include <boost/test/unit_test.hpp>
 

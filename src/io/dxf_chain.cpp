@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 namespace {
 
 V start_of(const Piece& p) { return p.segments.front().points.front(); }
@@ -182,4 +182,4 @@ std::string component_entities(const std::vector<Piece>& pieces, const Component
   return s;
 }
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

@@ -1,4 +1,4 @@
-// The DXF reader's libdxflib adapter (internal to src/io/dxf.cpp): collects the entities of the ENTITIES
+// The DXF reader's libdxflib adapter (internal to src/io/dxf_drawing.cpp): collects the entities of the ENTITIES
 // section with their type, handle and layer (from processCodeValuePair, which libdxflib calls for every group
 // before interpreting it), checks group values and the counts libdxflib sizes its arrays with, and keeps the
 // geometry libdxflib reports.
@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 class Collector : public DL_CreationAdapter {
  public:
@@ -277,4 +277,4 @@ class Collector : public DL_CreationAdapter {
   long current_ = -1, target_ = -1;
 };
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 Segment reversed(Segment s) {
   std::reverse(s.points.begin(), s.points.end());
@@ -180,7 +180,7 @@ class Converter {
     if (e.v[2] != e.v[5]) fail(e, "is not parallel to the XY plane (z " + exact_number(e.v[2]) + " and " + exact_number(e.v[5]) + ")");
     const V a(e.v[0], e.v[1]), b(e.v[3], e.v[4]);
     if (a == b) {
-      piece.zero_length = true;  // dropped from a chain; alone, an error (dxf.cpp)
+      piece.zero_length = true;  // dropped from a chain; alone, an error (dxf_selection.cpp)
       piece.segments.push_back({{a, b}, {}});
       return;
     }
@@ -357,4 +357,4 @@ class Converter {
 
 Piece convert_entity(const RawEntity& e, const std::string& file) { return Converter(file).convert(e); }
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

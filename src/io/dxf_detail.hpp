@@ -1,6 +1,7 @@
-// Internals of the DXF reader (io/dxf.hpp), shared by its parts: src/io/dxf.cpp (checks, selection, units,
-// blocks, the entry points), dxf_collector.hpp (what libdxflib delivers), dxf_convert.cpp (one entity to exact
-// Bezier segments), dxf_chain.cpp (the pieces grouped into chains by their end points, one walked end to end)
+// Internals of the DXF reader (io/dxf.hpp), shared by its parts: src/io/dxf_drawing.cpp (the checks before
+// libdxflib reads, units, handles, blocks), dxf_selection.cpp (the selection, the entry points),
+// dxf_collector.hpp (what libdxflib delivers), dxf_convert.cpp (one entity to exact Bezier segments),
+// dxf_chain.cpp (the pieces grouped into chains by their end points, one walked end to end)
 // and dxf_listing.cpp (every chain of a drawing, io/contour_listing.hpp).
 #pragma once
 
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
 using V = Vec2<double>;
 using Segment = BezierSegment<double>;
@@ -31,7 +32,7 @@ std::string point_text(const V& p);
 std::string upper(std::string s);
 std::string trim(const std::string& s);
 /// A group value (trimmed) as a number: the one reading of DXF numbers, on which rollkin's checks and
-/// libdxflib's conversion agree (dxf.cpp). nullopt, with `problem` saying why ("is not ...", what libdxflib
+/// libdxflib's conversion agree (dxf_drawing.cpp). nullopt, with `problem` saying why ("is not ...", what libdxflib
 /// would read instead), for any other text.
 std::optional<double> read_real(const std::string& text, std::string& problem);
 std::optional<int> read_int(const std::string& text, std::string& problem);
@@ -142,11 +143,11 @@ V point_on_component(const std::vector<Piece>& pieces, const Component& componen
 /// "LINE 2A, ARC 2B" (at most `limit` names, then "...").
 std::string component_entities(const std::vector<Piece>& pieces, const Component& component, std::size_t limit = 6);
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf
 
-namespace rollkin::dxf {
+namespace rollkin::io::dxf {
 
-// ---- the drawing (dxf.cpp) -----------------------------------------------------------------------------------
+// ---- the drawing (dxf_drawing.cpp) -----------------------------------------------------------------------------------
 
 /// What libdxflib delivered of a DXF text, with $INSUNITS.
 struct Drawing {
@@ -164,11 +165,22 @@ Drawing read_drawing(const std::string& text, const std::string& disk_path, cons
 /// What makes every selection of the drawing fail: an unsupported $INSUNITS, two entities with one handle.
 void check_drawing(const Drawing& drawing, const std::string& file);
 
+/// The drawing's $INSUNITS as out's unit, metres per unit and insunits; InputError for an unsupported code.
+void set_units(DxfContour& out, const Drawing& drawing, const std::string& file);
+
+/// InputError when two entities of `all` (the ENTITIES section) share a handle (compared case-insensitively).
+void check_unique_handles(const std::vector<const RawEntity*>& all, const std::string& file);
+
+/// The entity types a contour is made of, as messages list them; supported(type) for each.
+inline constexpr const char* kSupported =
+    "LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, SPLINE (and INSERTs of blocks made of them)";
+bool supported(const std::string& type);
+
 /// Entity types that are never curves (text, dimensions, hatches, viewports, ...): passed over.
 bool never_a_curve(const std::string& type);
 
 /// Converts entities of the ENTITIES section into pieces, an INSERT into its block's entities placed by it
-/// (dxf.cpp, "blocks"). InputError for an entity that is not read.
+/// (dxf_drawing.cpp, "blocks"). InputError for an entity that is not read.
 class Placer {
  public:
   Placer(const Drawing& drawing, std::string file);
@@ -192,4 +204,4 @@ class Placer {
   std::size_t placed_ = 0;
 };
 
-}  // namespace rollkin::dxf
+}  // namespace rollkin::io::dxf

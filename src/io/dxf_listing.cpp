@@ -23,7 +23,7 @@
 namespace rollkin::io {
 namespace {
 
-using namespace rollkin::dxf;
+using namespace rollkin::io::dxf;
 using json = nlohmann::ordered_json;
 
 /// The arc length of the segments (each on its own: a single segment has no corner).

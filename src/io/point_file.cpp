@@ -10,7 +10,7 @@
 #include <iterator>
 #include <sstream>
 
-namespace rollkin {
+namespace rollkin::io {
 namespace {
 
 bool is_separator(char c) { return c == ' ' || c == '\t' || c == ',' || c == ';' || c == '\r' || c == '\f' || c == '\v'; }
@@ -191,4 +191,4 @@ std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::s
   return parse_text(text, source, min_points, scale).points;
 }
 
-}  // namespace rollkin
+}  // namespace rollkin::io

@@ -1,11 +1,12 @@
-// Pieces shared by the SVG path-data parser (svg_path.cpp) and the document reader (svg_document.cpp).
+// Pieces shared by the SVG path-data parser (svg_path_data.cpp) and the document reader (svg_reader.cpp and
+// the files of svg_document.hpp).
 #pragma once
 
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_path_data.hpp"
 
 #include <string>
 
-namespace rollkin::svg_detail {
+namespace rollkin::io::svg_detail {
 
 enum class NumberScan { ok, none, out_of_range };
 
@@ -36,4 +37,4 @@ constexpr double kNearTie = 0.01;
 /// Path data in the path's own coordinates (no flip, no scale); `context` names the path in messages.
 std::vector<SvgSubpath> parse_path_data(const std::string& d, const std::string& file, const std::string& context);
 
-}  // namespace rollkin::svg_detail
+}  // namespace rollkin::io::svg_detail

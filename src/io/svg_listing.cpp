@@ -2,7 +2,7 @@
 // viewport units with y up (read_svg_shapes with the defaults: flip_y, no unit conversion, scale 1), each with
 // the scene snippet that selects it (docs/scene_format.md, "SVG contours").
 #include "rollkin/io/contour_listing.hpp"
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_reader.hpp"
 
 #include "segment_geometry.hpp"
 #include "svg_detail.hpp"

@@ -6,7 +6,7 @@
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/decimate.hpp"
 #include "rollkin/io/format.hpp"
-#include "rollkin/io/svg.hpp"
+#include "rollkin/io/svg_markup.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>

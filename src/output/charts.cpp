@@ -4,7 +4,8 @@
 
 #include "rollkin/analysis.hpp"
 #include "rollkin/io/decimate.hpp"
-#include "rollkin/io/svg.hpp"
+#include "rollkin/io/svg_chart.hpp"
+#include "rollkin/io/svg_markup.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>

@@ -3,7 +3,8 @@
 #include "rollkin/output/drawing.hpp"
 
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/svg.hpp"
+#include "rollkin/io/svg_drawing.hpp"
+#include "rollkin/io/svg_markup.hpp"
 
 #include <algorithm>
 #include <cmath>

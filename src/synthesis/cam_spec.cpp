@@ -231,9 +231,9 @@ class CamSpecReader {
   void read_law_file(CamSpec& spec, const std::string& name, double lift_unit) {
     const fs::path path = fs::path(dir_) / name;
     spec.files_read.push_back(path.string());
-    PointSamples rows;
+    io::PointSamples rows;
     try {
-      rows = read_point_samples(path.string(), 4);
+      rows = io::read_point_samples(path.string(), 4);
     } catch (const InputError& e) {  // the point file's words are about x y: say what the columns are here
       throw InputError(e.file(), e.location(), e.message() + " (a law file is read as a point file: two columns, the cam angle then "
                                                              "the follower's displacement; no header line, or one naming x y)");

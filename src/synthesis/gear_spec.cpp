@@ -48,9 +48,9 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     const std::string name = js.string(t["file"], "transmission.file", "the table's file name");
     const std::filesystem::path file = std::filesystem::path(dir) / name;
     spec.files_read.push_back(file.string());
-    PointSamples rows;
+    io::PointSamples rows;
     try {
-      rows = read_point_samples(file.string(), 5);
+      rows = io::read_point_samples(file.string(), 5);
     } catch (const InputError& e) {  // the point file's words are about x y: say what the columns are here
       throw InputError(e.file(), e.location(), e.message() + " (a transmission table is read as a point file: two columns, phi1 "
                                                              "then phi2; no header line, or one naming x y)");

@@ -425,7 +425,7 @@ check "reference on the decimal grid: row 2 is exactly -49.999 deg, not the doub
 run reference "$EX/paper_fourbar.json" --digits 40 --csv x.csv
 check "reference --digits 40 is refused (exit 2)" $([ "$rc" -eq 2 ] && [ ! -f x.csv ]; echo $?)
 
-# ---- deep JSON nesting: a located error at any depth, never a crash (issue 11, defect 2) -------------------
+# ---- deep JSON nesting: a located error at any depth, never a crash (docs/reliability.md, "How it is tested") --
 for levels in 1000 100000 1000000; do
   python3 -c "import sys; n = int(sys.argv[1]); print('{\"description\": ' + '[' * n + ']' * n + '}')" $levels > deep$levels.json
   run solve deep$levels.json --csv deep.csv
@@ -592,7 +592,7 @@ python3 -c "import sys; sys.stdout.buffer.write(open('shapes/disk.txt').read().e
 sed 's|shapes/disk.txt|shapes/disk_utf16.txt|' sampled.json > sampled_utf16.json
 run solve sampled_utf16.json
 check "UTF-16 point file: exit 2, says UTF-16" $([ "$rc" -eq 2 ] && grep -q "disk_utf16.txt: the file is UTF-16" err.txt; echo $?)
-# ---- singular poses, nothing to solve, bounded work (issue 11: defects 1, 5, 6, 8) -------------------
+# ---- singular poses, nothing to solve, bounded work (docs/reliability.md, "Numbers") -----------------
 # Zero unknowns: one crank on a driven revolute. Forward kinematics only: every row ok, residual 0, and the
 # crank's world angle is the input.
 cat > crank.json <<'JSON'
@@ -699,7 +699,7 @@ sys.exit(0 if worst < 1e-6 else 1)
 PY
 )
 
-# ---- corners (issue 12): a disk rolling over the vertex of a DXF polyline (ezdxf fixture, flat to x = 3 m) --
+# ---- corners (docs/scene_format.md, "Corners"): a disk rolling over a DXF polyline's vertex (ezdxf, flat to x = 3 m) --
 sed -e "s|\"type\": \"line\", \"from\": -10, \"to\": 10,|\"type\": \"dxf\", \"file\": \"$SRC/tests/data/dxf/scenes_mm.dxf\", \"layer\": \"TABLE_MM\", \"parameter\": \"arc_length\",|" \
   "$EX/cycloid.json" > table.json
 run solve table.json --csv table.csv
@@ -709,7 +709,7 @@ check "corner: stderr names the pair, the contour, the polyline and the input" \
 check "corner: rows before s = 3 ok, the next corner, the rest not_reached" \
   $(awk -F, 'NR > 1 { want = ($1 < 3) ? "ok" : (seen++ ? "not_reached" : "corner"); if ($NF != want) bad = 1 } END { exit bad || !seen }' table.csv; echo $?)
 
-# ---- centrodes (issue 13): the anti-parallelogram's crank centrodes are ellipses; rolled back, the linkage --
+# ---- centrodes: the anti-parallelogram's crank centrodes are ellipses; rolled back, the linkage --
 run centrodes "$EX/antiparallelogram.json" --links crank follower --out anti --step 0.5 --dxf anti.dxf
 check "centrodes: exit 0, both files and the DXF written" $([ "$rc" -eq 0 ] && [ -f anti.crank.txt ] && [ -f anti.follower.txt ] && [ -f anti.dxf ]; echo $?)
 check "centrodes: 721 points per file, one per input value" \
@@ -823,7 +823,7 @@ check "check --step 0: exit 2 naming --step" $([ "$rc" -eq 2 ] && grep -q -- "--
 run check "$UNDERCUT" --csv x.csv
 check "check --csv: unknown option, exit 2, nothing written" $([ "$rc" -eq 2 ] && grep -q 'unknown option "--csv" for check' err.txt && [ ! -e x.csv ]; echo $?)
 
-# ---- the input column is the decimal grid asked for; numbers in their shortest round-trip form (issue 15) ----
+# ---- the input column is the decimal grid asked for (docs/scene_format.md, "Inputs and sweep"); shortest round trip --
 run solve "$EX/paper_fourbar.json" --from -50 --to -48.9 --step 0.001 --csv grid.csv
 check "decimal grid: row 2 reads -49.999, row 1030 the double nearest to -48.971 (written -48.971)" \
   $([ "$rc" -eq 0 ] && [ "$(sed -n 3p grid.csv | cut -d, -f1)" = "-49.999" ] && [ "$(sed -n 1031p grid.csv | cut -d, -f1)" = "-48.971" ]; echo $?)

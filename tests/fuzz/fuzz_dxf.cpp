@@ -11,13 +11,13 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text = rollkin::fuzz::as_text(data, size);
-  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, rollkin::DxfSelection{"0", ""}, "fuzz.dxf"); });
-  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, rollkin::DxfSelection{"", "2F"}, "fuzz.dxf"); });
-  rollkin::DxfSelection handles;
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::io::parse_dxf_contour(text, rollkin::io::DxfSelection{"0", ""}, "fuzz.dxf"); });
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::io::parse_dxf_contour(text, rollkin::io::DxfSelection{"", "2F"}, "fuzz.dxf"); });
+  rollkin::io::DxfSelection handles;
   handles.handles = {"2F", "30"};
-  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, handles, "fuzz.dxf"); });
-  rollkin::DxfSelection near;
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::io::parse_dxf_contour(text, handles, "fuzz.dxf"); });
+  rollkin::io::DxfSelection near;
   near.near = rollkin::Vec2<double>(0, 0);
-  rollkin::fuzz::expect_documented_outcome([&] { rollkin::parse_dxf_contour(text, near, "fuzz.dxf"); });
+  rollkin::fuzz::expect_documented_outcome([&] { rollkin::io::parse_dxf_contour(text, near, "fuzz.dxf"); });
   return 0;
 }

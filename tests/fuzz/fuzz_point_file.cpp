@@ -7,6 +7,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   rollkin::fuzz::expect_documented_outcome(
-      [&] { rollkin::parse_point_text(rollkin::fuzz::as_text(data, size), "fuzz.txt", 4, 1e-3); });
+      [&] { rollkin::io::parse_point_text(rollkin::fuzz::as_text(data, size), "fuzz.txt", 4, 1e-3); });
   return 0;
 }

@@ -4,8 +4,9 @@
 // sweep.
 //
 // Part of the CGAL boundary: plain types here, CGAL (EPICK exact predicates, AABB tree) in
-// src/geometry/contact.cpp. Polylines follow the sample convention of validation.hpp: segment i joins
-// sample i to sample i + 1; a closed polyline has the implicit closing segment n - 1 -> 0 and does not
+// src/geometry/contact_location.cpp (find_contact, locate_contact) and src/geometry/interference.cpp
+// (SegmentHierarchy, check_interference). Polylines follow the sample convention of validation.hpp: segment i
+// joins sample i to sample i + 1; a closed polyline has the implicit closing segment n - 1 -> 0 and does not
 // repeat its first sample.
 #pragma once
 

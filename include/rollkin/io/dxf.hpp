@@ -77,7 +77,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin {
+namespace rollkin::io {
 
 /// Points closer than this times the selection's bounding-box diagonal meet (joints, closure).
 constexpr double kDxfJoinTolerance = 1e-9;
@@ -124,4 +124,4 @@ DxfContour parse_dxf_contour(const std::string& dxf, const DxfSelection& selecti
 /// Reads the file at `path` and calls parse_dxf_contour.
 DxfContour read_dxf_contour(const std::string& path, const DxfSelection& selection);
 
-}  // namespace rollkin
+}  // namespace rollkin::io

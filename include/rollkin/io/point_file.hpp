@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace rollkin {
+namespace rollkin::io {
 
 /// Points and the 1-based line of the file each was read from (for messages about a point).
 struct PointSamples {
@@ -37,4 +37,4 @@ std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t m
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source,
                                            std::size_t min_points, double scale = 1.0);
 
-}  // namespace rollkin
+}  // namespace rollkin::io

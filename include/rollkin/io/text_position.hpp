@@ -5,7 +5,7 @@
 #include <string_view>
 #include <utility>
 
-namespace rollkin {
+namespace rollkin::io {
 
 /// 1-based line and column of the character at byte `offset` of `text` (offsets past the end give the position
 /// after the last character).
@@ -23,4 +23,4 @@ inline std::pair<std::size_t, std::size_t> line_column_at(std::string_view text,
   return {line, column};
 }
 
-}  // namespace rollkin
+}  // namespace rollkin::io

@@ -1,9 +1,9 @@
 // "svg" contours: one subpath of an SVG file, selected by the element's id and "subpath", or by "near", read by
-// read_svg_shape (io/svg_path.hpp) with the scene's length unit, then made a BezierPath (docs/scene_format.md,
+// read_svg_shape (io/svg_reader.hpp) with the scene's length unit, then made a BezierPath (docs/scene_format.md,
 // "SVG contours").
 #include "contour_reader.hpp"
 
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_reader.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,16 +1,12 @@
-// Closest points, crossings and touching zones of two polylines (geometry/contact.hpp).
-//
-// CGAL 5.5's AABB tree is three-dimensional, so find_contact lifts the planar segments to z = 0: distances
-// and intersections of coplanar 3D segments are those of the planar ones.
+// Crossings and touching zones of two polylines (geometry/contact.hpp, check_interference): bounding-circle
+// hierarchies (SegmentHierarchy) descended together, each candidate pair tested with the exact predicates of
+// EPICK, and the near pairs grouped into zones by union-find.
 #include "rollkin/geometry/contact.hpp"
 
 #include "rollkin/se2.hpp"
 
 #include "epick.hpp"
-
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include "segment_pairs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,118 +14,37 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <stdexcept>
 #include <string>
 
 namespace rollkin::geometry {
 namespace {
 
-using detail::Epick;
+using detail::NearPair;
+using detail::Polyline;
 using detail::Segment2;
-using detail::to_point;
+using detail::max_abs_coordinate;
+using detail::near_pairs;
+using detail::require_samples;
+using detail::rounding_margin;
+using detail::segment_closest_points;
 
-using Point3 = Epick::Point_3;
-using Segment3 = Epick::Segment_3;
-using Segment3Iterator = std::vector<Segment3>::const_iterator;
-using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, CGAL::AABB_segment_primitive<Epick, Segment3Iterator>>>;
+constexpr std::size_t kLeafSegments = 4;  // segments per leaf of a SegmentHierarchy
 
-// Samples per polyline in find_contact's first, coarse pass.
-constexpr std::size_t kCoarseSamples = 256;
-
-/// A polyline with the sample convention of geometry/validation.hpp, optionally moved by a rigid motion
-/// (its points are moved as they are read: only the segments looked at cost anything).
-struct Polyline {
-  const std::vector<Vec2<double>>& pts;
-  bool closed;
-  const SE2<double>* motion = nullptr;
-
-  std::size_t segments() const { return closed ? pts.size() : pts.size() - 1; }
-  Vec2<double> point(std::size_t k) const { return motion ? motion->act(pts[k]) : pts[k]; }
-  Vec2<double> start(std::size_t i) const { return point(i); }
-  Vec2<double> end(std::size_t i) const { return point((i + 1) % pts.size()); }
-  Segment2 segment(std::size_t i) const { return Segment2(to_point(start(i)), to_point(end(i))); }
-  bool consecutive(std::size_t i, std::size_t j) const {
-    return j == i + 1 || (closed && i + 1 == segments() && j == 0);
-  }
-
-  /// Sample i as a point of the polyline (the last sample of an open one ends the last segment).
-  PolylinePoint at_sample(std::size_t i) const {
-    return i < segments() ? PolylinePoint{i, 0.0, point(i)} : PolylinePoint{i - 1, 1.0, point(i)};
-  }
-
-  /// Orthogonal projection of q onto segment i, clamped to the segment.
-  PolylinePoint project(std::size_t i, const Vec2<double>& q) const {
-    const Vec2<double> d = end(i) - start(i);
-    const double len2 = d.squaredNorm();
-    const double f = len2 > 0 ? std::clamp((q - start(i)).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return {i, f, start(i) + f * d};
-  }
-
-  /// A point known to lie on segment i (a crossing point): its fraction, the point itself kept.
-  PolylinePoint locate(std::size_t i, const Vec2<double>& q) const {
-    PolylinePoint p = project(i, q);
-    p.point = q;
-    return p;
-  }
-};
-
-void require_samples(const Polyline& p, const char* name) {
-  if (p.pts.size() < (p.closed ? 3u : 2u))
-    throw std::invalid_argument(std::string("find_contact/check_interference: polyline ") + name + " has " +
-                                std::to_string(p.pts.size()) + " samples; it needs at least " +
-                                (p.closed ? "3 (closed)" : "2 (open)"));
+CGAL::Bbox_2 grown(const CGAL::Bbox_2& b, double margin) {
+  return CGAL::Bbox_2(b.xmin() - margin, b.ymin() - margin, b.xmax() + margin, b.ymax() + margin);
 }
 
-// ---- find_contact: AABB trees -----------------------------------------------------------------------
-
-Point3 lift(const Vec2<double>& v) { return Point3(v.x(), v.y(), 0); }
-
-std::vector<Segment3> lifted_segments(const Polyline& p) {
-  std::vector<Segment3> s;
-  s.reserve(p.segments());
-  for (std::size_t i = 0; i < p.segments(); ++i) s.emplace_back(lift(p.start(i)), lift(p.end(i)));
-  return s;
+/// Circles of na and nb (moved by b_to_a) farther apart than margin.
+bool far_apart(const SegmentHierarchy::Node& na, const SegmentHierarchy::Node& nb, const SE2<double>& b_to_a,
+               double margin) {
+  const double reach = na.radius + nb.radius + margin;
+  return (na.centre - b_to_a.act(nb.centre)).squaredNorm() > reach * reach;
 }
 
-/// Closest point of `to`'s AABB tree to every `stride`-th sample of `from`
-/// (CGAL::AABB_tree::closest_point_and_primitive), keeping the best pair in `best` (`from` is polyline a
-/// when from_is_a). Two savings, both exact:
-/// - a sample p is skipped when the last queried sample q proves it cannot beat the best pair:
-///   dist(p, to) >= dist(q, to) - |p - q| >= best (triangle inequality);
-/// - each query starts from the previous answer as its hint, which bounds the search ball at once
-///   (consecutive samples have nearby answers).
-void closest_to_samples(const Polyline& from, const Polyline& to, const std::vector<Segment3>& segs,
-                        const AabbTree& tree, bool from_is_a, std::size_t stride, ContactCandidate& best) {
-  AabbTree::Point_and_primitive_id hint(segs.front().source(), segs.begin());
-  Vec2<double> queried = from.pts.front();
-  double queried_distance = -1;  // no query yet
-  for (std::size_t i = 0; i < from.pts.size(); i += stride) {
-    const Vec2<double>& p = from.pts[i];
-    if (queried_distance - (p - queried).norm() >= best.distance) continue;
-    hint = tree.closest_point_and_primitive(lift(p), hint);
-    const std::size_t j = static_cast<std::size_t>(hint.second - segs.begin());
-    const PolylinePoint on_from = from.at_sample(i);
-    const PolylinePoint on_to = to.project(j, p);
-    const double d = (on_to.point - p).norm();
-    queried = p;
-    queried_distance = d;
-    if (d >= best.distance) continue;
-    best.distance = d;
-    best.on_a = from_is_a ? on_from : on_to;
-    best.on_b = from_is_a ? on_to : on_from;
-  }
-}
+}  // namespace
 
-// ---- check_interference: near segment pairs and union-find ---------------------------------------------
+namespace detail {
 
-struct NearPair {
-  std::size_t i, j;  // segment of a, segment of b
-  double distance;
-  bool crossing;
-};
-
-/// Closest points of two segments. Crossing segments meet at their common point; otherwise the minimum
-/// is attained at an endpoint of one of them, so it is the best of the four endpoint projections.
 std::pair<PolylinePoint, PolylinePoint> segment_closest_points(const Polyline& a, std::size_t i, const Polyline& b,
                                                                std::size_t j, bool crossing) {
   if (crossing) {
@@ -155,27 +70,7 @@ double max_abs_coordinate(const std::vector<Vec2<double>>& pts) {
   return m;
 }
 
-// ---- check_interference: bounding-circle hierarchies ----------------------------------------------------
-
-constexpr std::size_t kLeafSegments = 4;  // segments per leaf of a SegmentHierarchy
-
-/// Distance within which candidates are kept: touch_tol and a few ulps of the coordinates' scale, so that no
-/// pair within touch_tol is dropped because a circle or a moved point was rounded.
 double rounding_margin(double touch_tol, double scale) { return touch_tol + 8 * epsilon<double>() * scale; }
-
-CGAL::Bbox_2 grown(const CGAL::Bbox_2& b, double margin) {
-  return CGAL::Bbox_2(b.xmin() - margin, b.ymin() - margin, b.xmax() + margin, b.ymax() + margin);
-}
-
-/// Segment pairs of a and b (b's points already moved into a's frame: b_in_a) within touch_tol, found by
-/// descending both hierarchies together (circles moved by b_to_a); each candidate measured with
-/// CGAL::squared_distance and tested with the exact predicate CGAL::do_intersect. Sorted by (i, j).
-/// Circles of na and nb (moved by b_to_a) farther apart than margin.
-bool far_apart(const SegmentHierarchy::Node& na, const SegmentHierarchy::Node& nb, const SE2<double>& b_to_a,
-               double margin) {
-  const double reach = na.radius + nb.radius + margin;
-  return (na.centre - b_to_a.act(nb.centre)).squaredNorm() > reach * reach;
-}
 
 std::vector<NearPair> near_pairs(const SegmentHierarchy& a, const SegmentHierarchy& b, const SE2<double>& b_to_a,
                                  const Polyline& b_in_a, double touch_tol, double margin) {
@@ -215,6 +110,10 @@ std::vector<NearPair> near_pairs(const SegmentHierarchy& a, const SegmentHierarc
   });
   return pairs;
 }
+
+}  // namespace detail
+
+namespace {
 
 class UnionFind {
  public:
@@ -285,35 +184,6 @@ std::vector<ContactZone> zones_of(const Polyline& a, const Polyline& b, const st
 }
 
 }  // namespace
-
-ContactCandidate find_contact(const std::vector<Vec2<double>>& a_pts, bool a_closed,
-                              const std::vector<Vec2<double>>& b_pts, bool b_closed) {
-  const Polyline a{a_pts, a_closed}, b{b_pts, b_closed};
-  require_samples(a, "a");
-  require_samples(b, "b");
-  ContactCandidate best;
-  const SE2<double> identity;
-  const std::vector<NearPair> crossings =  // sorted by (a segment, b segment)
-      near_pairs(SegmentHierarchy(a_pts, a_closed), SegmentHierarchy(b_pts, b_closed), identity, b, 0.0,
-                 rounding_margin(0.0, std::max(max_abs_coordinate(a_pts), max_abs_coordinate(b_pts))));
-  if (!crossings.empty()) {
-    std::tie(best.on_a, best.on_b) = segment_closest_points(a, crossings.front().i, b, crossings.front().j, true);
-    best.intersect = true;
-    return best;
-  }
-  const std::vector<Segment3> a3 = lifted_segments(a), b3 = lifted_segments(b);
-  AabbTree a_tree(a3.begin(), a3.end()), b_tree(b3.begin(), b3.end());
-  a_tree.do_not_accelerate_distance_queries();  // every query gets a hint instead of the internal kd-tree
-  b_tree.do_not_accelerate_distance_queries();
-  // A coarse pass first makes `best` small, so that the full pass can skip most samples.
-  best.distance = std::numeric_limits<double>::infinity();
-  for (const std::size_t stride : {std::max<std::size_t>(1, std::max(a_pts.size(), b_pts.size()) / kCoarseSamples),
-                                   std::size_t{1}}) {
-    closest_to_samples(a, b, b3, b_tree, true, stride, best);
-    closest_to_samples(b, a, a3, a_tree, false, stride, best);
-  }
-  return best;
-}
 
 SegmentHierarchy::SegmentHierarchy(std::vector<Vec2<double>> points, bool closed)
     : points_(std::move(points)), closed_(closed) {

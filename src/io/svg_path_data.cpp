@@ -1,4 +1,4 @@
-#include "rollkin/io/svg_path.hpp"
+#include "rollkin/io/svg_path_data.hpp"
 
 #include "svg_detail.hpp"
 
@@ -10,7 +10,7 @@
 #include <cstring>
 #include <optional>
 
-namespace rollkin {
+namespace rollkin::io {
 namespace {
 
 using P = Vec2<double>;
@@ -462,4 +462,4 @@ std::vector<SvgSubpath> svg_detail::parse_path_data(const std::string& d, const 
   return PathDataParser(d, file, context).parse();
 }
 
-}  // namespace rollkin
+}  // namespace rollkin::io
