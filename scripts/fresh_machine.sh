@@ -77,7 +77,7 @@ t_end=$EPOCHREALTIME
 sleep 0.5  # the stamping reader's last lines
 
 # Phase boundaries from the lines of scripts/setup.sh and apt-get.
-at() { grep -m"${2:-1}" -E "^[0-9.]+ $1" "$log" | tail -1 | cut -d' ' -f1; }
+at() { grep -m"${2:-1}" -E "^[0-9.]+ $1" "$log" | tail -1 | cut -d" " -f1 || true; }
 after() { awk -v t="$2" -v re="^$1" '$1 > t { s = $0; sub(/^[^ ]+ /, "", s); if (s ~ re) { print $1; exit } }' "$log"; }
 t_apt=$(at '\[setup\] (installing missing packages|all build packages)')
 t_install=$(at 'Reading package lists' 2)   # the second one: apt-get install starts
@@ -91,16 +91,16 @@ count=$(grep -m1 -oE '[0-9]+ newly installed' "$log" || true)
 span() { [[ -n "$1" && -n "$2" ]] && awk -v a="$1" -v b="$2" 'BEGIN { printf "%8.1f s", b - a }' || echo "       -"; }
 echo
 echo "fresh Debian 12 root, README command $([[ $what == cli ]] && echo 1 || echo 2), $(nproc) cores, load before: $load_before, after: $(cut -d' ' -f1-3 /proc/loadavg)"
-printf '%-44s %s\n' "phase" "wall"
-printf '%-44s %s\n' "apt-get update" "$(span "$t_apt" "$t_install")"
-printf '%-44s %s\n' "packages: resolve + download (${need#Need to get })" "$(span "$t_install" "$t_fetched")"
-printf '%-44s %s\n' "packages: unpack + set up (${count:-?})" "$(span "$t_fetched" "$t_configure")"
+printf '%-46s %s\n' "phase" "wall"
+printf '%-46s %s\n' "apt-get update" "$(span "$t_apt" "$t_install")"
+printf '%-46s %s\n' "packages: resolve + download (${need#Need to get })" "$(span "$t_install" "$t_fetched")"
+printf '%-46s %s\n' "packages: unpack + set up (${count:-?})" "$(span "$t_fetched" "$t_configure")"
 if [[ $packages_only == 0 ]]; then
-  printf '%-44s %s\n' "CMake configure" "$(span "$t_configure" "$t_build")"
-  printf '%-44s %s\n' "build" "$(span "$t_build" "$t_done")"
-  printf '%-44s %s\n' "run ($([[ $what == cli ]] && echo example || echo ctest))" "$(span "$t_done" "$t_end")"
+  printf '%-46s %s\n' "CMake configure" "$(span "$t_configure" "$t_build")"
+  printf '%-46s %s\n' "build" "$(span "$t_build" "$t_done")"
+  printf '%-46s %s\n' "run ($([[ $what == cli ]] && echo example || echo ctest))" "$(span "$t_done" "$t_end")"
 fi
-printf '%-44s %s\n' "total" "$(span "$t0" "$t_end")"
+printf '%-46s %s\n' "total" "$(span "$t0" "$t_end")"
 echo "log: $log"
 if [[ $packages_only == 0 ]]; then exit "$rc"; fi
 [[ -n "$t_configure" ]] || { echo "fresh_machine.sh: the packages step did not finish (exit $rc)" >&2; exit 1; }
