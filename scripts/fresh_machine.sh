@@ -56,6 +56,8 @@ mount -t proc proc "$copy/proc" && mounted+=("$copy/proc")
 mount --rbind /dev "$copy/dev" && mount --make-rslave "$copy/dev" && mounted+=("$copy/dev")
 mount -t sysfs sysfs "$copy/sys" && mounted+=("$copy/sys")
 cp /etc/resolv.conf "$copy/etc/resolv.conf"
+# The copy's dirty pages to disk first: else dpkg's first fsyncs wait for them (ext4 commits them together).
+sync
 
 # Every output line, stamped with the wall clock when it arrives.
 log="$copy.log"
