@@ -42,7 +42,7 @@ command=$(grep -m1 -E "$pattern" "$root/README.md" | sed 's/^ *//')
 copy="$base.run-$what-$$"
 mounted=()
 cleanup() {
-  local m
+  local i
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -R "${mounted[i]}" 2>/dev/null || umount -l "${mounted[i]}" || true; done
   if [[ $keep == 1 ]]; then echo "kept: $copy" >&2; return; fi
   if grep -q " $copy/" /proc/mounts; then echo "fresh_machine.sh: $copy still has mounts; not removing it" >&2; return; fi
