@@ -50,6 +50,13 @@ def rate_row(case, seconds, n):
     print("| %s | %.0f (%.0f-%.0f) variants/s |" % (case, statistics.median(v), v[0], v[-1]))
 
 
+def cpu_seconds(f):
+    """Process CPU time (all threads) of f()."""
+    t0 = time.process_time()
+    f()
+    return time.process_time() - t0
+
+
 def load():
     return " ".join(open("/proc/loadavg").read().split()[:3])
 
@@ -89,8 +96,9 @@ def main():
                 readings(lambda: sc.solve(-50, 100, step, analysis=analysis), r), "us", 1e6 / poses)
 
     variants = [sc.modified({"links[1].contours[0].a": 0.45 + 0.1 * k / n}) for k in range(n)]
-    bare = readings(lambda: sum(rollkin._sweep_seconds(v, *SWEEP) for v in variants), r)
-    one = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=1), r)
+    bare_cpu, one_cpu = [], []
+    bare = readings(lambda: bare_cpu.append(cpu_seconds(lambda: [rollkin._sweep_seconds(v, *SWEEP) for v in variants])), r)
+    one = readings(lambda: one_cpu.append(cpu_seconds(lambda: rollkin.solve_many(variants, *SWEEP, threads=1))), r)
     cpu0 = time.process_time()
     every = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=0), r)
     cpu_share = (time.process_time() - cpu0) / sum(every)
@@ -103,16 +111,22 @@ def main():
     per_variant = lambda t: statistics.median(t) / n * 1e6
     print("| overhead of Python per variant (solve_many threads=1 - C++ loop) | %.1f us (C++ loop %.1f us) |" %
           (per_variant(one) - per_variant(bare), per_variant(bare)))
+    print("| CPU time per variant (process CPU time: the other jobs of a shared machine do not count): solve_many "
+          "threads=1 %.1f us, C++ loop %.1f us, ratio %.2f |" % (per_variant(one_cpu), per_variant(bare_cpu),
+                                                                per_variant(one_cpu) / per_variant(bare_cpu)))
     if args.long_variants:
         m = args.long_variants
         long_variants = variants[:: max(1, n // m)][:m]
         fine = (-50, 100, 0.01)
-        one = readings(lambda: rollkin.solve_many(long_variants, *fine, threads=1), r)
-        every = readings(lambda: rollkin.solve_many(long_variants, *fine, threads=0), r)
+        one_cpu, every_cpu = [], []
+        one = readings(lambda: one_cpu.append(cpu_seconds(lambda: rollkin.solve_many(long_variants, *fine, threads=1))), r)
+        every = readings(lambda: every_cpu.append(cpu_seconds(lambda: rollkin.solve_many(long_variants, *fine, threads=0))), r)
         rate_row("%d variants x 15001 poses: solve_many, threads=1" % m, one, m)
         rate_row("... solve_many, threads=0 (%d cores)" % cores, every, m)
         speedup = statistics.median(one) / statistics.median(every)
-        print("| speed-up of all cores, %d x 15001 poses (medians) | %.2f = %.2f x cores |" % (m, speedup, speedup / cores))
+        print("| speed-up of all cores, %d x 15001 poses (medians) | %.2f = %.2f x cores (CPU time per variant: "
+              "%.2f ms on one thread, %.2f ms on all) |" % (m, speedup, speedup / cores, statistics.median(one_cpu) / m * 1e3,
+                                                            statistics.median(every_cpu) / m * 1e3))
     if not args.no_dask:
         dask = dask_readings(variants, r, 2)
         rate_row("... dask.distributed, 2 local workers", dask, n)
