@@ -11,7 +11,10 @@ Prints Markdown table rows, each the median (min-max) of --repeat readings of wa
     through the bare C++ loop (assembly and sweep, no table: rollkin._sweep_seconds), solve_many on one
     thread, solve_many on all cores (with the speed-up against one thread and its ratio to the number of
     cores), and dask.distributed with 2 local worker processes (cluster start excluded); then the overhead
-    per variant of Python and of dask against the C++ loop.
+    per variant of Python and of dask against the C++ loop;
+  - a batch of few long sweeps: --long-variants variants of 15,001 poses each (0.01-degree steps) through
+    solve_many on one thread and on all cores, and its speed-up (its work per variant is large, so the
+    speed-up shows what the threads share rather than the calls' fixed costs).
 The load average before and after, and the process's CPU time over wall time on all cores, show how much of
 the machine was free: on a shared machine the all-cores speed-up is bounded by the idle cores.
 """
@@ -47,6 +50,13 @@ def rate_row(case, seconds, n):
     print("| %s | %.0f (%.0f-%.0f) variants/s |" % (case, statistics.median(v), v[0], v[-1]))
 
 
+def cpu_seconds(f):
+    """Process CPU time (all threads) of f()."""
+    t0 = time.process_time()
+    f()
+    return time.process_time() - t0
+
+
 def load():
     return " ".join(open("/proc/loadavg").read().split()[:3])
 
@@ -69,6 +79,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--repeat", type=int, default=7)
     parser.add_argument("--variants", type=int, default=2000)
+    parser.add_argument("--long-variants", type=int, default=8, help="variants of 15,001 poses (0: no such rows)")
     parser.add_argument("--no-dask", action="store_true", help="leave out the dask row")
     args = parser.parse_args()
     r, n = args.repeat, args.variants
@@ -85,8 +96,9 @@ def main():
                 readings(lambda: sc.solve(-50, 100, step, analysis=analysis), r), "us", 1e6 / poses)
 
     variants = [sc.modified({"links[1].contours[0].a": 0.45 + 0.1 * k / n}) for k in range(n)]
-    bare = readings(lambda: sum(rollkin._sweep_seconds(v, *SWEEP) for v in variants), r)
-    one = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=1), r)
+    bare_cpu, one_cpu = [], []
+    bare = readings(lambda: bare_cpu.append(cpu_seconds(lambda: [rollkin._sweep_seconds(v, *SWEEP) for v in variants])), r)
+    one = readings(lambda: one_cpu.append(cpu_seconds(lambda: rollkin.solve_many(variants, *SWEEP, threads=1))), r)
     cpu0 = time.process_time()
     every = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=0), r)
     cpu_share = (time.process_time() - cpu0) / sum(every)
@@ -99,6 +111,22 @@ def main():
     per_variant = lambda t: statistics.median(t) / n * 1e6
     print("| overhead of Python per variant (solve_many threads=1 - C++ loop) | %.1f us (C++ loop %.1f us) |" %
           (per_variant(one) - per_variant(bare), per_variant(bare)))
+    print("| CPU time per variant (process CPU time: the other jobs of a shared machine do not count): solve_many "
+          "threads=1 %.1f us, C++ loop %.1f us, ratio %.2f |" % (per_variant(one_cpu), per_variant(bare_cpu),
+                                                                per_variant(one_cpu) / per_variant(bare_cpu)))
+    if args.long_variants:
+        m = args.long_variants
+        long_variants = variants[:: max(1, n // m)][:m]
+        fine = (-50, 100, 0.01)
+        one_cpu, every_cpu = [], []
+        one = readings(lambda: one_cpu.append(cpu_seconds(lambda: rollkin.solve_many(long_variants, *fine, threads=1))), r)
+        every = readings(lambda: every_cpu.append(cpu_seconds(lambda: rollkin.solve_many(long_variants, *fine, threads=0))), r)
+        rate_row("%d variants x 15001 poses: solve_many, threads=1" % m, one, m)
+        rate_row("... solve_many, threads=0 (%d cores)" % cores, every, m)
+        speedup = statistics.median(one) / statistics.median(every)
+        print("| speed-up of all cores, %d x 15001 poses (medians) | %.2f = %.2f x cores (CPU time per variant: "
+              "%.2f ms on one thread, %.2f ms on all) |" % (m, speedup, speedup / cores, statistics.median(one_cpu) / m * 1e3,
+                                                            statistics.median(every_cpu) / m * 1e3))
     if not args.no_dask:
         dask = dask_readings(variants, r, 2)
         rate_row("... dask.distributed, 2 local workers", dask, n)

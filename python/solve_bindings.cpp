@@ -6,8 +6,9 @@
 // (PyErr_CheckSignals). A Ctrl-C there raises the cancellation flag that sweep() polls between poses
 // (ContinuationSettings::cancel) and KeyboardInterrupt propagates; an assembly under way ends on its worker.
 //
-// Files (Scene.write, Scene.centrodes(dxf=)) go through io::OutputSet like the CLI's: every path is checked
-// before solving, an output that is one of the scene's input files is refused, and all are written or none.
+// Every call runs the library's output::SweepRun, as the CLI's commands do: the request checked and bounded,
+// the files (Scene.write, Scene.centrodes(dxf=)) checked before solving (an output that is one of the scene's
+// input files is refused) and written all or nothing.
 #include "bindings.hpp"
 
 #include "rollkin/centrodes.hpp"
@@ -17,9 +18,11 @@
 #include "rollkin/io/work_bound.hpp"
 #include "rollkin/output/centrode_files.hpp"
 #include "rollkin/output/sweep_files.hpp"
+#include "rollkin/output/sweep_run.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -29,6 +32,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -37,66 +41,60 @@ namespace {
 
 // ---- solving ---------------------------------------------------------------------------------------------
 
-/// What to solve: the sweep's overrides (None: the scene's own "sweep") and the extra columns.
+/// What to solve: the sweep's overrides (None: the scene's own "sweep") and its bound, and the extra columns.
 struct Request {
-  std::optional<double> start, stop, step;
+  rollkin::output::SweepRequest sweep;
   bool analysis = false, rates = false;
-  double max_steps = rollkin::io::kDefaultMaxSteps;
 };
+
+/// The keywords in the library's messages about a request.
+const rollkin::output::RequestNames kKeywordNames{"start/stop/step", "start, stop and step", "max_steps"};
+
+/// The files a scene read (never written over): its scene file (load_scene's path, scene()'s name=, kept by
+/// modified() and pickling) and its contour files.
+std::vector<rollkin::io::InputFile> input_files(const PyScene& s) {
+  std::vector<rollkin::io::InputFile> inputs;
+  if (!s.source.empty()) inputs.push_back({s.source, "the scene's input file '" + s.source + "'"});
+  for (const std::string& f : s.scene->files_read)
+    inputs.push_back({f, "the input file '" + f + "' (a contour file the scene read)"});
+  return inputs;
+}
+
+/// The library's run of `s` (output::SweepRun: `outputs` checked against the scene's files, the sweep with the
+/// request's overrides checked and bounded, as the CLI's), its refusals of the request as ValueError.
+rollkin::output::SweepRun start_run(const PyScene& s, const Request& r,
+                                    const std::vector<rollkin::output::OutputRequest>& outputs = {}) {
+  try {
+    return rollkin::output::SweepRun(s.scene, input_files(s), outputs, r.sweep, kKeywordNames);
+  } catch (const rollkin::output::SweepRequestError& e) {
+    throw py::value_error(e.what());
+  } catch (const rollkin::io::WorkLimitError& e) {
+    throw py::value_error(s.scene->file + ": " + e.what());
+  }
+}
 
 /// One scene to solve and, once solved, its table (and, for writing files from it, its sweep result).
 struct Job {
-  std::shared_ptr<const rollkin::io::Scene> scene;
-  rollkin::io::Sweep sweep;
-  std::vector<double> inputs;  // internal units
+  rollkin::output::SweepRun run;
   rollkin::SolveReport<double> assembly;
-  rollkin::io::SweepTable table;
+  rollkin::io::SweepColumns table;
   std::exception_ptr error;
   bool keep_result = false;    // keep `result` (Scene.write, Scene.centrodes)
   std::optional<rollkin::SweepResult<double>> result;
-  std::vector<double> values;  // the inputs in file units (the table's input column)
 };
 
-/// The sweep of `s` with the request's overrides, checked and bounded like the CLI's (ValueError otherwise:
-/// io::bounded_inputs, the one rule of max_steps).
-Job prepare(const PyScene& s, const Request& r) {
-  const rollkin::io::Scene& scene = *s.scene;
-  Job job;
-  job.scene = s.scene;
-  const std::optional<rollkin::io::Sweep> requested = rollkin::io::requested_sweep(scene, r.start, r.stop, r.step);
-  if (!requested) throw py::value_error(scene.file + " has no \"sweep\"; give start, stop and step");
-  job.sweep = *requested;
-  const std::string bad = rollkin::io::check_sweep(job.sweep);
-  if (!bad.empty()) throw py::value_error("start/stop/step: " + bad);
-  try {
-    job.inputs = rollkin::io::bounded_inputs(scene, job.sweep, r.max_steps, "max_steps");
-  } catch (const std::exception& e) {
-    throw py::value_error(scene.file + ": " + e.what());
-  }
-  return job;
-}
-
-/// What the CLI's writers take: the solved sweep of a job (job.result set).
-rollkin::io::SweepOutput output_of(const Job& job, const Request& r) {
-  return {*job.scene, job.sweep, *job.result, job.values, r.analysis};
-}
-
-/// Assembles and sweeps one scene (on a worker thread: no Python here). Exceptions are kept in job.error.
+/// Assembles and sweeps one scene and builds its table (on a worker thread: no Python here). Exceptions are
+/// kept in job.error.
 void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
   try {
-    const rollkin::io::Scene& scene = *job.scene;
-    const rollkin::Mechanism<double>& m = scene.mechanism;
-    rollkin::SolveData<double> sd(m);
-    rollkin::VectorX<double> q = scene.guess;
+    rollkin::SolveData<double> sd(job.run.mechanism());
+    rollkin::VectorX<double> q;
     if (cancel) return;
-    job.assembly = rollkin::assemble(m, q, sd, scene.held);
+    job.assembly = job.run.try_assemble(sd, q);
     if (cancel) return;
-    rollkin::ContinuationSettings<double> cfg;
-    cfg.cancel = &cancel;
-    job.result = rollkin::sweep(m, sd, q, job.assembly, job.sweep.driver, job.inputs, cfg);
+    job.result = job.run.solve(sd, q, job.assembly, &cancel);
     if (cancel) return;
-    job.values = rollkin::io::sweep_values(job.sweep);
-    job.table = rollkin::io::sweep_table(output_of(job, r), r.rates);
+    job.table = rollkin::io::sweep_columns(job.run.output(*job.result, r.analysis), r.rates);
     if (!job.keep_result) job.result.reset();
   } catch (...) {
     job.error = std::current_exception();
@@ -116,59 +114,77 @@ void run_all(const std::shared_ptr<std::vector<Job>>& jobs, const Request& r, in
   });
 }
 
-/// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
-/// assembled also "error": the InputError message Scene.solve would raise for it.
-py::dict to_dict(const Job& job) {
-  const rollkin::io::SweepTable& t = job.table;
-  py::dict out;
-  for (std::size_t c = 0; c < t.names.size(); ++c) {
-    py::array_t<double> a(static_cast<py::ssize_t>(t.rows()));
-    if (t.rows()) std::memcpy(a.mutable_data(), t.columns[c].data(), t.rows() * sizeof(double));
-    out[py::str(t.names[c])] = std::move(a);
+/// A column as a float64 array over its own buffer: the vector is moved into the array's base object, so
+/// the numbers are not copied.
+py::array_t<double> column_array(std::vector<double>&& column) {
+  auto* owner = new std::vector<double>(std::move(column));
+  const py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>(static_cast<py::ssize_t>(owner->size()), owner->data(), base);
+}
+
+/// The statuses as a NumPy array of str (dtype <U width of the longest present): each distinct status's
+/// name is encoded once and copied into the rows of the array's UCS-4 buffer.
+py::array status_array(const std::vector<rollkin::SolveStatus>& status) {
+  std::vector<std::u32string> name;  // by code, "" for a status not present
+  std::size_t width = 1;
+  for (const rollkin::SolveStatus s : status) {
+    const auto code = static_cast<std::size_t>(s);
+    if (code >= name.size()) name.resize(code + 1);
+    if (!name[code].empty()) continue;
+    for (const char* c = rollkin::to_string(s); *c; ++c) name[code] += static_cast<char32_t>(static_cast<unsigned char>(*c));
+    width = std::max(width, name[code].size());
   }
-  out[py::str(t.status_name)] = str_array(t.status);
-  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
-    out["error"] = rollkin::io::assembly_error(*job.scene, job.assembly.detail).what();
+  for (std::u32string& n : name) n.resize(width, U'\0');
+  py::array out(py::dtype("<U" + std::to_string(width)), py::array::ShapeContainer{static_cast<py::ssize_t>(status.size())});
+  auto* chars = static_cast<char32_t*>(out.mutable_data());
+  for (const rollkin::SolveStatus s : status) {
+    std::memcpy(chars, name[static_cast<std::size_t>(s)].data(), width * sizeof(char32_t));
+    chars += width;
+  }
   return out;
 }
 
-/// Solves one scene on a worker thread; an assembly that fails is an InputError, as in the CLI.
-Job solved(const PyScene& s, const Request& r, bool keep_result) {
+/// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
+/// assembled also "error": the InputError message Scene.solve would raise for it. The columns move into the
+/// arrays: the job's table is empty afterwards.
+py::dict to_dict(Job& job) {
+  rollkin::io::SweepColumns& t = job.table;
+  py::dict out;
+  for (std::size_t c = 0; c < t.names.size(); ++c) out[py::str(t.names[c])] = column_array(std::move(t.columns[c]));
+  out["status"] = status_array(t.status);
+  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
+    out["error"] = rollkin::io::assembly_error(job.run.scene(), job.assembly.detail).what();
+  return out;
+}
+
+/// Solves one prepared run on a worker thread; an assembly that fails is an InputError, as in the CLI.
+Job solved(rollkin::output::SweepRun run, const Request& r, bool keep_result) {
   auto jobs = std::make_shared<std::vector<Job>>();
-  jobs->push_back(prepare(s, r));
+  jobs->push_back(Job{std::move(run)});
   Job& job = jobs->front();
   job.keep_result = keep_result;
   run_all(jobs, r, 1);
   if (job.error) std::rethrow_exception(job.error);
-  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble) throw rollkin::io::assembly_error(*s.scene, job.assembly.detail);
+  if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
+    throw rollkin::io::assembly_error(job.run.scene(), job.assembly.detail);
   return std::move(job);
 }
 
-py::dict solve(const PyScene& s, const Request& r) { return to_dict(solved(s, r, false)); }
+py::dict solve(const PyScene& s, const Request& r) {
+  Job job = solved(start_run(s, r), r, false);
+  return to_dict(job);
+}
 
 // ---- files -----------------------------------------------------------------------------------------------
-
-/// The files a scene read (never written over) as an OutputSet's inputs: its scene file (load_scene's path,
-/// scene()'s name=, kept by modified() and pickling) and its contour files.
-rollkin::io::OutputSet output_set(const PyScene& s) {
-  std::vector<rollkin::io::InputFile> inputs;
-  if (!s.source.empty()) inputs.push_back({s.source, "the scene's input file '" + s.source + "'"});
-  for (const std::string& f : s.scene->files_read)
-    inputs.push_back({f, "the input file '" + f + "' (a contour file the scene read)"});
-  return rollkin::io::OutputSet(std::move(inputs));
-}
 
 /// Checks every requested path (format keyword, path or None: output::sweep_formats()) before solving,
 /// solves, and writes every file or none, as `rollkin solve` does.
 py::dict write(const PyScene& s, const Request& r, const std::vector<std::pair<std::string, py::object>>& files) {
-  rollkin::io::OutputSet outputs = output_set(s);
-  rollkin::output::SweepFiles requested(outputs);
+  std::vector<rollkin::output::OutputRequest> outputs;
   for (const auto& [format, path] : files)
-    if (!path.is_none()) requested.request(format, path_argument(path, format.c_str()), format);
-  const Job job = solved(s, r, true);
-  const rollkin::io::SweepOutput out = output_of(job, r);
-  requested.write(out, rollkin::output::WriteOptions{r.rates, 1});
-  outputs.commit();
+    if (!path.is_none()) outputs.push_back({format, path_argument(path, format.c_str()), format});
+  Job job = solved(start_run(s, r, outputs), r, true);
+  job.run.write(job.run.output(*job.result, r.analysis), rollkin::output::WriteOptions{r.rates, 1});
   return to_dict(job);
 }
 
@@ -188,18 +204,17 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
                    const py::object& dxf) {
   const int a = link_named(*s.scene, link_a), b = link_named(*s.scene, link_b);
   if (a == b) throw py::value_error("centrodes(): give two different links, got \"" + link_a + "\" twice");
-  rollkin::io::OutputSet outputs = output_set(s);
-  const std::optional<std::size_t> dxf_index =
-      dxf.is_none() ? std::nullopt : std::optional<std::size_t>(outputs.add("dxf", path_argument(dxf, "dxf")));
-  const Job job = solved(s, r, true);
+  const std::string dxf_path = dxf.is_none() ? std::string() : path_argument(dxf, "dxf");
+  Job job = solved(start_run(s, r, {{"dxf", dxf_path, ""}}), r, true);
   const rollkin::Mechanism<double>& m = s.scene->mechanism;
   rollkin::KinematicsData<double> kin(m);
   const auto centres = rollkin::centrodes(m, kin, *job.result, a, b);
-  if (dxf_index) {  // a centrode that is one point (a revolute joins the links) has no curve: no DXF, a warning
-    const std::string single_point = rollkin::output::centrode_single_point(output_of(job, r), centres, a, b);
-    if (single_point.empty()) outputs.set(*dxf_index, rollkin::output::centrode_dxf(output_of(job, r), centres, a, b));
-    else outputs.omit(*dxf_index);
-    outputs.commit();
+  const rollkin::io::SweepOutput solved_sweep = job.run.output(*job.result);
+  if (!dxf_path.empty()) {  // a centrode that is one point (a revolute joins the links) has no curve: no DXF, a warning
+    const std::string single_point = rollkin::output::centrode_single_point(solved_sweep, centres, a, b);
+    if (single_point.empty()) job.run.set_output("dxf", [&] { return rollkin::output::centrode_dxf(solved_sweep, centres, a, b); });
+    else job.run.omit_output("dxf");
+    job.run.commit();
     const std::string why = single_point + "; dxf not written: a point has no curve to draw as a spline";
     if (!single_point.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, why.c_str(), 1) != 0) throw py::error_already_set();
   }
@@ -209,7 +224,7 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (py::ssize_t k = 0; k < n; ++k) {
     const auto& c = centres[static_cast<std::size_t>(k)];
-    input.mutable_at(k) = job.values[static_cast<std::size_t>(k)];
+    input.mutable_at(k) = solved_sweep.inputs[static_cast<std::size_t>(k)];
     finite.mutable_at(k) = c.finite;
     ax.mutable_at(k) = c.finite ? c.in_a.x() : nan;
     ay.mutable_at(k) = c.finite ? c.in_a.y() : nan;
@@ -219,12 +234,12 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
     wy.mutable_at(k) = c.finite ? c.world.y() : nan;
   }
   py::dict out;
-  out[py::str(job.table.names.front())] = input;
+  out[py::str(job.table.names.front())] = input;  // the input column's name
   out["a"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(ax, ay));
   out["b"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(bx, by));
   out["world"] = py::module_::import("numpy").attr("column_stack")(py::make_tuple(wx, wy));
   out["finite"] = finite;
-  out[py::str(job.table.status_name)] = to_dict(job)[py::str(job.table.status_name)];
+  out["status"] = status_array(job.table.status);
   return out;
 }
 
@@ -233,15 +248,15 @@ py::dict centrodes(const PyScene& s, const std::string& link_a, const std::strin
 py::dict reference(const PyScene& s, const Request& r, int digits) {
   if (digits != 30 && digits != 50 && digits != 100)
     throw py::value_error("reference(): digits must be 30, 50 or 100, got " + std::to_string(digits));
-  const Job job = prepare(s, r);
+  const rollkin::output::SweepRun run = start_run(s, r);
   const rollkin::ReferenceSweep ref = interruptible<rollkin::ReferenceSweep>(
-      [scene = s.scene, sweep = job.sweep, digits](const std::atomic<bool>&) {
+      [scene = s.scene, sweep = run.sweep(), digits](const std::atomic<bool>&) {
         return rollkin::io::scene_reference(*scene, sweep, digits);
       });
   if (ref.assembly_status == rollkin::SolveStatus::CannotAssemble)
     throw rollkin::io::assembly_error(*s.scene, ref.assembly_detail);
   const rollkin::Mechanism<double>& m = s.scene->mechanism;
-  const int input = m.drivers[static_cast<std::size_t>(job.sweep.driver)];
+  const int input = m.drivers[static_cast<std::size_t>(run.sweep().driver)];
   const py::ssize_t n = static_cast<py::ssize_t>(ref.poses.size());
   auto column = [&](auto field) {
     py::array_t<double> a(n);
@@ -267,12 +282,13 @@ py::dict reference(const PyScene& s, const Request& r, int digits) {
 
 py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int threads) {
   auto jobs = std::make_shared<std::vector<Job>>();
-  for (const PyScene& s : scenes) jobs->push_back(prepare(s, r));
+  jobs->reserve(scenes.size());
+  for (const PyScene& s : scenes) jobs->push_back(Job{start_run(s, r)});
   run_all(jobs, r, threads);
   for (const Job& j : *jobs)
     if (j.error) std::rethrow_exception(j.error);
   py::list out;
-  for (const Job& j : *jobs) out.append(to_dict(j));
+  for (Job& j : *jobs) out.append(to_dict(j));
   return out;
 }
 
@@ -281,7 +297,14 @@ Request request(std::optional<double> start, std::optional<double> stop, std::op
                 bool rates, double max_steps) {
   const std::string bad = rollkin::io::max_steps_problem(max_steps);
   if (!bad.empty()) throw py::value_error("max_steps: " + bad);
-  return Request{start, stop, step, analysis, rates, max_steps};
+  Request r;
+  r.sweep.from = start;
+  r.sweep.to = stop;
+  r.sweep.step = step;
+  r.sweep.max_steps = max_steps;
+  r.analysis = analysis;
+  r.rates = rates;
+  return r;
 }
 
 // ---- docstrings ------------------------------------------------------------------------------------------
@@ -384,14 +407,13 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
         [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
           // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
           // table and no NumPy, for the overhead of Python and dask per variant against it.
-          Job job = prepare(s, request(start, stop, step, false, false, rollkin::io::kDefaultMaxSteps));
+          const rollkin::output::SweepRun run = start_run(s, request(start, stop, step, false, false, rollkin::io::kDefaultMaxSteps));
           py::gil_scoped_release nogil;
           const auto t0 = std::chrono::steady_clock::now();
-          const rollkin::Mechanism<double>& m = job.scene->mechanism;
-          rollkin::SolveData<double> sd(m);
-          rollkin::VectorX<double> q = job.scene->guess;
-          const auto assembly = rollkin::assemble(m, q, sd, job.scene->held);
-          [[maybe_unused]] const auto result = rollkin::sweep(m, sd, q, assembly, job.sweep.driver, job.inputs);
+          rollkin::SolveData<double> sd(run.mechanism());
+          rollkin::VectorX<double> q;
+          const auto assembly = run.try_assemble(sd, q);
+          [[maybe_unused]] const auto result = run.solve(sd, q, assembly);
           const std::chrono::duration<double> t = std::chrono::steady_clock::now() - t0;
           return t.count();
         },

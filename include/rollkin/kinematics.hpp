@@ -310,6 +310,20 @@ template <class S> void link_poses(const Mechanism<S>& m, const KinematicsData<S
   }
 }
 
+/// World pose of every link at q into `pose` (sized by the caller), from the transforms of the spanning tree's
+/// pairs alone (pair_transform: positions only, no pair closing a loop): the numbers link_poses() gives after
+/// evaluate_pairs(q), for a fraction of the work (a table of link poses).
+template <class S> void link_poses_at(const Mechanism<S>& m, const VectorX<S>& q, std::vector<SE2<S>>& pose) {
+  pose[static_cast<std::size_t>(m.ground)] = SE2<S>();
+  for (int i : m.tree_order) {  // parents before children, the ground first
+    if (i == m.ground) continue;
+    const LoopEdge e = m.tree[i].edge;
+    const Pair<S>& pair = m.pairs[static_cast<std::size_t>(e.pair)];
+    const SE2<S> E = pair_transform(pair, m.contours, q.data() + pair.first_variable);
+    pose[i] = pose[m.tree[i].parent] * (e.forward ? E : E.inverse());
+  }
+}
+
 /// World pose of every link, from the spanning tree (pairs evaluated at q).
 template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
   std::vector<SE2<S>> pose(m.links.size());

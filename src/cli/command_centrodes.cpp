@@ -61,22 +61,23 @@ int named_link(const Mechanism<double>& m, const std::string& name) {
 int run_centrodes(const CentrodesOptions& o) {
   if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
   const std::string file_a = o.out + "." + o.links[0] + ".txt", file_b = o.out + "." + o.links[1] + ".txt";
-  SweepRun run(o.sweep, {{"--out (link A)", file_a}, {"--out (link B)", file_b}, {"--dxf", o.dxf}});
-  const io::Scene& scene = run.scene;
+  output::SweepRun run = start_run(o.sweep, {{"--out (link A)", file_a, ""}, {"--out (link B)", file_b, ""}, {"--dxf", o.dxf, ""}});
+  const io::Scene& scene = run.scene();
+  const io::Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   const int a = named_link(m, o.links[0]), b = named_link(m, o.links[1]);
 
   SolveData<double> sd(m);
   VectorX<double> q;
-  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "assembling the mechanism";
+  const SolveReport<double> assembly = run.assemble(sd, q);
   g_doing = "solving the sweep";
-  const SweepResult<double> result = sweep(m, sd, q, assembly, run.sweep.driver, run.inputs);
+  const SweepResult<double> result = run.solve(sd, q, assembly);
   g_doing = "computing the instant centres";
   const std::vector<InstantCentre<double>> centres = centrodes(m, sd.kin, result, a, b);
 
   g_doing = "building the output files";
-  const std::vector<double> file_values = io::sweep_values(run.sweep);
-  const io::SweepOutput ctx{scene, run.sweep, result, file_values};
+  const io::SweepOutput ctx = run.output(result);
   run.set_output("--out (link A)", [&] { return output::centrode_text(ctx, centres, a, b, true); });
   run.set_output("--out (link B)", [&] { return output::centrode_text(ctx, centres, a, b, false); });
   // A centrode that is one point (two links joined by a revolute) has no curve to draw: its point files are
@@ -85,16 +86,16 @@ int run_centrodes(const CentrodesOptions& o) {
   if (single_point.empty()) run.set_output("--dxf", [&] { return output::centrode_dxf(ctx, centres, a, b); });
   else run.omit_output("--dxf");
   g_doing = "writing the output files";
-  run.outputs.commit();
+  run.commit();
 
   std::size_t finite = 0;
   std::vector<std::string> problems;
-  for (const auto& l : result.limits) problems.push_back(limit_line(scene, run.sweep, l));
+  for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
   for (std::size_t k = 0; k < centres.size(); ++k) {
     if (centres[k].finite) {
       ++finite;
     } else if (result.poses[k].report.has_pose()) {
-      problems.push_back("centre at infinity at " + input_text(scene, run.sweep, run.inputs[k]) +
+      problems.push_back("centre at infinity at " + input_text(scene, sw, run.inputs()[k]) +
                          ": link '" + o.links[1] + "' translates relative to link '" + o.links[0] +
                          "' (no point written; a comment line marks the place in both files)");
     }

@@ -149,22 +149,24 @@ namespace {
 
 /// `rollkin check`: assembly, sweep, the design check on stdout, findings and sweep problems on stderr.
 int run_check(const CheckOptions& o) {
-  SweepRun run(o.sweep, {});
-  const io::Scene& scene = run.scene;
-  const io::Sweep& sw = run.sweep;
+  output::SweepRun run = start_run(o.sweep, {});
+  const io::Scene& scene = run.scene();
+  const io::Sweep& sw = run.sweep();
+  const std::vector<double>& inputs = run.inputs();
   const Mechanism<double>& m = scene.mechanism;
   SolveData<double> sd(m);
   VectorX<double> q;
-  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "assembling the mechanism";
+  const SolveReport<double> assembly = run.assemble(sd, q);
   g_doing = "solving the sweep";
-  const SweepResult<double> result = sweep(m, sd, q, assembly, sw.driver, run.inputs);
+  const SweepResult<double> result = run.solve(sd, q, assembly);
   g_doing = "checking the design";
   const DesignReport design = design_report(scene, sw, result);
   const SweepSummary<double> found = summarise(result);
-  std::vector<std::string> problems = sweep_problems(scene, sw, found, run.inputs);
+  std::vector<std::string> problems = sweep_problems(scene, sw, found, inputs);
   const std::size_t solved = found.solved() + found.singular.size();  // every pose with values
   const std::string unit = scene.unit_label(sw.variable);
-  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << run.inputs.size()
+  std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << inputs.size()
             << " poses solved, " << sw.input << " from " << io::format_number(sw.from) << " to " << io::format_number(sw.to)
             << (unit.empty() ? "" : " " + unit) << "\n";
   for (const auto& l : design.section) std::cout << l << "\n";

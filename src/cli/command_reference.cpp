@@ -42,15 +42,15 @@ namespace {
 
 /// `rollkin reference`: the same assembly and sweep in MPFR, written as decimal strings (rollkin/reference.hpp).
 int run_reference(const ReferenceOptions& o) {
-  SweepRun run(o.sweep, {{"--csv", o.csv}});
-  const io::Scene& scene = run.scene;
-  const io::Sweep& sw = run.sweep;
+  output::SweepRun run = start_run(o.sweep, {{"--csv", o.csv, ""}});
+  const io::Scene& scene = run.scene();
+  const io::Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   g_doing = "computing the reference sweep in MPFR";
   const ReferenceSweep ref = io::scene_reference(scene, sw, o.digits);
   g_doing = "writing the output file";
   run.set_output("--csv", [&] { return reference_csv_text(ref, m); });
-  run.outputs.commit();
+  run.commit();
   std::size_t solved = 0;
   for (const auto& p : ref.poses) solved += p.status == SolveStatus::Converged ? 1 : 0;
   std::cout << fs::path(scene.file).filename().string() << ": " << solved << "/" << ref.poses.size()

@@ -150,35 +150,27 @@ std::vector<std::pair<std::string, std::string>> output_files(const SolveOptions
   return files;
 }
 
-bool any_file(const SolveOptions& o) {
-  for (const auto& file : o.files)
-    if (!file.second.empty()) return true;
-  return false;
-}
-
 /// `rollkin solve` on one scene (o.sweep.scene, or `loaded` when already read): assembly, sweep, outputs,
 /// summary on `out`, one line per problem on `err`.
 int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ostream& out, std::ostream& err) {
-  SweepRun run = loaded ? SweepRun(std::move(*loaded), o.sweep, {}) : SweepRun(o.sweep, {});
-  g_doing = "checking the output files";
-  output::SweepFiles files(run.outputs);
-  for (const auto& [format, path] : o.files)
-    if (!path.empty()) files.request(format, path, "--" + format);
-  const io::Scene& scene = run.scene;
-  const io::Sweep& sw = run.sweep;
-  const std::vector<double>& inputs = run.inputs;
+  std::vector<output::OutputRequest> files;
+  for (const auto& [format, path] : o.files) files.push_back({"--" + format, path, format});
+  output::SweepRun run = start_run(o.sweep, files, std::move(loaded));
+  const io::Scene& scene = run.scene();
+  const io::Sweep& sw = run.sweep();
+  const std::vector<double>& inputs = run.inputs();
   const Mechanism<double>& m = scene.mechanism;
 
   SolveData<double> sd(m);
   VectorX<double> q;
-  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "assembling the mechanism";
+  const SolveReport<double> assembly = run.assemble(sd, q);
   if (o.verbose) print_assembly(out, scene, assembly, full_rank(m, sd));
   g_doing = "solving the sweep";
   // Only the poses' values feed the outputs, the interference check and the design check: without them the
   // sweep keeps its summary alone (sweep_summary.hpp), no values, and on a fine grid interpolates the poses
   // between its sub-steps, each checked by its residual (dense output, solve/continuation.hpp).
-  const bool values_needed =
-      any_file(o) || o.interference || o.verbose;
+  const bool values_needed = run.writes_files() || o.interference || o.verbose;
   std::optional<SweepResult<double>> result;
   std::optional<io::SweepFile> file;
   SweepSummary<double> found;
@@ -187,24 +179,20 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
     // (io/sweep_file.hpp). The interference and design checks take the whole result in memory.
     std::optional<io::SweepRows> rows;
     if (o.interference || o.verbose) {
-      result = sweep(m, sd, q, assembly, sw.driver, inputs);
+      result = run.solve(sd, q, assembly);
       found = summarise(*result);
       rows.emplace(*result);
     } else {
       file.emplace(assembly, inputs, m.variable_count());
-      io::sweep_to_file(m, sd, q, assembly, sw.driver, inputs, {}, *file);
+      run.solve_into(sd, q, assembly, *file);
       found = *file;
       rows.emplace(*file);
     }
     // Everything is computed before anything is written, and then written all or nothing.
-    g_doing = "building the output files";
-    const std::vector<double> file_values = io::sweep_values(sw);
-    const io::SweepOutput ctx{scene, sw, *rows, file_values, o.analysis};
-    files.write(ctx, output::WriteOptions{o.rates, o.jobs});
     g_doing = "writing the output files";
-    run.outputs.commit();
+    run.write(run.output(*rows, o.analysis), output::WriteOptions{o.rates, o.jobs});
   } else {
-    found = sweep_summary(m, sd, q, assembly, sw.driver, inputs);
+    found = run.summary(sd, q, assembly);
   }
   g_doing = "reporting";
 

@@ -288,8 +288,9 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
 int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   if (o.links[0] == o.links[1]) throw UsageError("--links: give two different links, got \"" + o.links[0] + "\" twice");
   const std::string txt = o.out + ".txt", dxf = o.out + ".dxf";
-  SweepRun run(o.sweep, {{"--out (points)", txt}, {"--out (DXF)", dxf}});
-  const io::Scene& scene = run.scene;
+  output::SweepRun run = start_run(o.sweep, {{"--out (points)", txt, ""}, {"--out (DXF)", dxf, ""}});
+  const io::Scene& scene = run.scene();
+  const io::Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   const int a = m.find_link(o.links[0]), b = m.find_link(o.links[1]);
   if (a < 0 || b < 0) throw UsageError("--links: no link \"" + (a < 0 ? o.links[0] : o.links[1]) + "\" in the scene");
@@ -299,10 +300,11 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   if (o.tolerance && !(*o.tolerance > 0)) throw UsageError("--tolerance: expected a distance > 0, got " + o.tolerance_text);
   SolveData<double> sd(m);
   VectorX<double> q;
-  const SolveReport<double> assembly = assemble_scene(scene, sd, q);
+  g_doing = "assembling the mechanism";
+  const SolveReport<double> assembly = run.assemble(sd, q);
   g_doing = "solving the sweep";
-  const SweepResult<double> result = sweep(m, sd, q, assembly, run.sweep.driver, run.inputs);
-  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, run.sweep, l) << "\n";
+  const SweepResult<double> result = run.solve(sd, q, assembly);
+  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, sw, l) << "\n";
   g_doing = "computing the envelope";
   const synthesis::SweepMotion motion(m, result, a, b);
   const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
@@ -323,12 +325,12 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
     run.omit_output("--out (DXF)");
   }
   g_doing = "writing the output files";
-  run.outputs.commit();
+  run.commit();
   std::cout << scene.file << ": envelope of " << o.contour << " relative to link " << o.links[0] << ": " << pts.size() << " points"
             << (env.closed ? " (closed)" : " (open)") << ", spline within " << io::format_number(env.max_midpoint_deviation, 3)
             << " at every mid-pose (tolerance " << io::format_number(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
   for (const auto& d : env.defects)
-    std::cerr << scene.file << ": at " << input_text(scene, run.sweep, d.t) << ": " << d.what << "\n";
+    std::cerr << scene.file << ": at " << input_text(scene, sw, d.t) << ": " << d.what << "\n";
   return env.defects.empty() && result.limits.empty() ? 0 : 1;
 }
 

@@ -1,6 +1,6 @@
 // What the commands of build/rollkin share (declared and documented in commands.hpp): the option helpers,
-// the start of every sweeping command (SweepRun: scene, outputs, sweep, bounded work), the assembly, the
-// messages of a sweep's problems and the exit status of an error.
+// the start of every sweeping command (start_run: the scene read, then output::SweepRun), the messages of a
+// sweep's problems and the exit status of an error.
 #include "commands.hpp"
 
 #include "rollkin/io/work_bound.hpp"
@@ -95,51 +95,25 @@ void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>*
 
 namespace {
 
-/// The sweep to run: the scene's, with the command line's overrides.
-io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r) {
-  std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
-  if (!s) throw UsageError(scene.file + " has no \"sweep\"; give --from, --to and --step");
-  if (r.from) s->from_text = r.from_text;
-  if (r.to) s->to_text = r.to_text;
-  if (r.step) s->step_text = r.step_text;
-  const std::string bad = io::check_sweep(*s);
-  if (!bad.empty()) throw UsageError("--from/--to/--step: " + bad);
-  return *s;
-}
-
-/// Bounded work (rollkin/io/work_bound.hpp): the sweep's inputs, or a UsageError (exit 2) above --max-steps.
-std::vector<double> bounded_inputs(const io::Scene& scene, const io::Sweep& sw, double max_steps) {
-  try {
-    return io::bounded_inputs(scene, sw, max_steps, "--max-steps");
-  } catch (const io::WorkLimitError& e) {
-    throw UsageError(e.what());
-  }
-}
+/// The command line's options in the library's messages about a request.
+const output::RequestNames kOptionNames{"--from/--to/--step", "--from, --to and --step", "--max-steps"};
 
 }  // namespace
 
-SweepRun::SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
-    : SweepRun(read_scene(r.scene), r, output_files) {}
-
-SweepRun::SweepRun(io::Scene loaded, const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files)
-    : scene(std::move(loaded)), outputs(files_read(scene)) {
+output::SweepRun start_run(const SweepRequest& r, const std::vector<output::OutputRequest>& outputs,
+                           std::optional<io::Scene> loaded) {
+  auto scene = std::make_shared<const io::Scene>(loaded ? std::move(*loaded) : read_scene(r.scene));
+  std::vector<io::InputFile> inputs{{scene->file, ""}};  // "the input file '<path>' read by this run"
+  for (const std::string& f : scene->files_read) inputs.push_back({f, ""});
   g_doing = "checking the output files";
-  for (const auto& [option, path] : output_files)
-    if (!path.empty()) given_[option] = outputs.add(option, path);
-  sweep = requested_sweep(scene, r);
-  inputs = bounded_inputs(scene, sweep, r.max_steps);
+  try {
+    return output::SweepRun(std::move(scene), std::move(inputs), outputs, r, kOptionNames);
+  } catch (const output::SweepRequestError& e) {
+    throw UsageError(e.what());
+  } catch (const io::WorkLimitError& e) {  // bounded work (rollkin/io/work_bound.hpp): exit 2
+    throw UsageError(e.what());
+  }
 }
-
-void SweepRun::set_output(const std::string& option, const std::function<std::string()>& make_text) {
-  const auto it = given_.find(option);
-  if (it != given_.end()) outputs.set(it->second, make_text());
-}
-
-void SweepRun::omit_output(const std::string& option) {
-  const auto it = given_.find(option);
-  if (it != given_.end()) outputs.omit(it->second);
-}
-
 
 io::Scene read_scene(const std::string& file) {
   g_doing = "reading the scene";
@@ -167,20 +141,6 @@ std::string with_scene_name(const std::string& pattern, const std::string& stem)
   for (std::size_t at; (at = pattern.find(kToken, from)) != std::string::npos; from = at + kToken.size())
     out += pattern.substr(from, at - from) + stem;
   return out + pattern.substr(from);
-}
-
-std::vector<std::string> SweepRun::files_read(const io::Scene& scene) {
-  std::vector<std::string> files{scene.file};
-  files.insert(files.end(), scene.files_read.begin(), scene.files_read.end());
-  return files;
-}
-
-SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q) {
-  g_doing = "assembling the mechanism";
-  q = scene.guess;
-  const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
-  if (assembly.status == SolveStatus::CannotAssemble) throw io::assembly_error(scene, assembly.detail);
-  return assembly;
 }
 
 // ---- messages and reports ---------------------------------------------------------------------------------

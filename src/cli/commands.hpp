@@ -1,11 +1,13 @@
 // The parts the commands of build/rollkin share (src/cli/commands.cpp): the command type, the option helpers,
-// the sweep every sweeping command runs (SweepRequest, SweepRun), the messages of a sweep's problems, the
-// design check's text (src/cli/command_check.cpp) and the exit status of an error. Each command is one file
-// src/cli/command_<name>.cpp declaring its options and running it; main.cpp lists the commands.
+// the start of the sweep every sweeping command runs (SweepRequest, start_run: output::SweepRun), the
+// messages of a sweep's problems, the design check's text (src/cli/command_check.cpp) and the exit status of
+// an error. Each command is one file src/cli/command_<name>.cpp declaring its options and running it; main.cpp
+// lists the commands.
 #pragma once
 #include "rollkin/io/sweep_table.hpp"
 #include "rollkin/output/centrode_files.hpp"
 #include "rollkin/output/sweep_files.hpp"
+#include "rollkin/output/sweep_run.hpp"
 
 #include "rollkin/design_check.hpp"
 #include "rollkin/io/format.hpp"
@@ -17,7 +19,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -79,45 +80,22 @@ CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slo
 
 // ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
 
-/// The scene and the part of the sweep the command line may override.
-struct SweepRequest {
+/// The scene and the part of the sweep the command line may override (output::SweepRequest: --from, --to,
+/// --step as given, --max-steps).
+struct SweepRequest : output::SweepRequest {
   std::string scene;
-  std::optional<double> from, to, step;
-  std::string from_text, to_text, step_text;  // as given: the grid is the decimal one (solve/sweep_grid.hpp)
-  double max_steps = 1e7;  // bounded work (rollkin/io/work_bound.hpp): sub-steps and values at most
 };
 
 /// The sweep options; the positional SCENE goes to r.scene, or, when `scenes` is given, one or more of them.
 void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>* scenes = nullptr);
 
-/// The start of every sweeping command: the scene read, the output files checked against the files it read
-/// (and against each other) before anything is solved, the requested sweep built and its work bounded.
-/// Outputs are written all or nothing at the end (`outputs.commit()`).
-struct SweepRun {
-  io::Scene scene;
-  io::OutputSet outputs;
-  io::Sweep sweep;
-  std::vector<double> inputs;  // the sweep's input values, internal units
-
-  /// `output_files`: (option, path) of every output the command may write; path "" for one not given.
-  SweepRun(const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files);
-  /// The same with the scene already read (`loaded`, read from r.scene): a run of several scenes reads them
-  /// all first, to check every output against every file any of them reads (check_run_outputs).
-  SweepRun(io::Scene loaded, const SweepRequest& r, const std::vector<std::pair<std::string, std::string>>& output_files);
-
-  /// Sets the content of the output file named by `option`, if the command line gave one (`make_text` is
-  /// called only then).
-  void set_output(const std::string& option, const std::function<std::string()>& make_text);
-
-  /// The output file named by `option`, if given, is not written after all (io::OutputSet::omit).
-  void omit_output(const std::string& option);
-
-
- private:
-  std::map<std::string, std::size_t> given_;  // option -> index in `outputs`, for the outputs given
-
-  static std::vector<std::string> files_read(const io::Scene& scene);
-};
+/// The start of every sweeping command: the scene read (r.scene, or `loaded` when a run of several scenes has
+/// read it already), then the library's checks of the run (output::SweepRun) before anything is solved: the
+/// output files (option, path "" for one not given, format for a file of output::sweep_formats()) against the
+/// files the scene reads and each other, the requested sweep, and its work. A sweep that cannot be run (no
+/// "sweep" and no --from/--to/--step, a bad range, above --max-steps) is a UsageError (exit 2).
+output::SweepRun start_run(const SweepRequest& r, const std::vector<output::OutputRequest>& outputs,
+                           std::optional<io::Scene> loaded = std::nullopt);
 
 /// Reads a scene file (io::load_scene), g_doing saying so.
 io::Scene read_scene(const std::string& file);
@@ -137,10 +115,6 @@ void check_run_outputs(const std::vector<PlannedScene>& run);
 
 /// `pattern` with every "{scene}" replaced by `stem` (text that `stem` brings in is not searched again).
 std::string with_scene_name(const std::string& pattern, const std::string& stem);
-
-/// Assembles the scene's mechanism into q (sd ready for sweep()). Inconsistent constraints at assembly are a
-/// problem of the scene (sizes, frames, values), not a motion limit: an InputError (exit 2, nothing written).
-SolveReport<double> assemble_scene(const io::Scene& scene, SolveData<double>& sd, VectorX<double>& q);
 
 // ---- messages and reports ---------------------------------------------------------------------------------
 

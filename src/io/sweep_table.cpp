@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace rollkin::io {
 namespace {
@@ -80,14 +81,20 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
   return cols;
 }
 
-/// What a row is computed with, allocated once per table (per thread): the pose's variables, the pairs
-/// evaluated there, the links' poses, the analysis' workspace (with the analysis columns), the row's values.
+/// What a row is computed with, made once per table (per thread): each column's scale to output units, the
+/// links' poses, the analysis' workspace (with the analysis columns), the row's values.
 struct RowWork {
-  RowWork(const SweepOutput& out) : rows(out.result), kin(out.scene.mechanism), link_pose(out.scene.mechanism.links.size()) {
-    if (out.analysis) analysis_data.emplace(out.scene.mechanism);
+  RowWork(const SweepOutput& out, const std::vector<int>& others)
+      : rows(out.result), link_pose(out.scene.mechanism.links.size()) {
+    const Mechanism<double>& m = out.scene.mechanism;
+    in_scale = output_scale(m, out.sweep.variable);
+    for (int i : others) other_scale.push_back(output_scale(m, i));
+    for (int i : m.unknowns) unknown_scale.push_back(output_scale(m, i));
+    if (out.analysis) analysis_data.emplace(m);
   }
   RowReader rows;
-  KinematicsData<double> kin;
+  double in_scale;
+  std::vector<double> other_scale, unknown_scale;  // output_scale of each of `others`, of each unknown
   VectorX<double> q;
   std::vector<SE2<double>> link_pose;
   std::optional<AnalysisData<double>> analysis_data;
@@ -97,22 +104,22 @@ struct RowWork {
 /// The numeric values of row r into w.row, in the order of column_names.
 void row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r, RowWork& w) {
   const Mechanism<double>& m = out.scene.mechanism;
-  const double in_scale = output_scale(m, out.sweep.variable);
+  const double in_scale = w.in_scale;
   const SweepRows& res = out.result;
   std::vector<double>& row = w.row;
   row.clear();
   row.push_back(input_column(out, r));
   const bool ok = res.has_pose(r);  // values also for singular poses
   const auto q = w.rows.q(r);
-  for (int i : others) row.push_back(ok ? q(i) * output_scale(m, i) : kNaN);
+  for (std::size_t k = 0; k < others.size(); ++k) row.push_back(ok ? q(others[k]) * w.other_scale[k] : kNaN);
   if (rates) {
     const auto qdot = w.rows.qdot(r);
-    for (int i : m.unknowns) row.push_back(ok ? qdot(i) * output_scale(m, i) / in_scale : kNaN);
+    for (std::size_t k = 0; k < m.unknowns.size(); ++k)
+      row.push_back(ok ? qdot(m.unknowns[k]) * w.unknown_scale[k] / in_scale : kNaN);
   }
   if (ok) {
     w.q = q;
-    evaluate_pairs<double>(m, w.q, nullptr, 1, w.kin);
-    link_poses(m, w.kin, w.link_pose);
+    link_poses_at(m, w.q, w.link_pose);  // the spanning tree's pairs alone, positions only
   }
   for (const SE2<double>& lp : w.link_pose) {
     row.push_back(ok ? lp.translation().x() : kNaN);
@@ -175,20 +182,30 @@ double input_column(const SweepOutput& out, std::size_t r) {
   return radians_file_angle ? from_radians(out.inputs[r], kOutputAngle) : out.inputs[r];
 }
 
-SweepTable sweep_table(const SweepOutput& out, bool rates) {
-  SweepTable t;
+SweepColumns sweep_columns(const SweepOutput& out, bool rates) {
+  SweepColumns t;
   std::vector<int> others;
   t.names = column_names(out, rates, others);
   const std::size_t rows = out.result.size();
   t.columns.assign(t.names.size(), std::vector<double>(rows));
-  t.status.reserve(rows);
-  RowWork w(out);
+  t.status.resize(rows);
+  RowWork w(out, others);
   for (std::size_t r = 0; r < rows; ++r) {
     row_values(out, rates, others, r, w);
-    if (w.row.size() != t.names.size()) throw std::logic_error("sweep_table: a row's values do not match its columns");
+    if (w.row.size() != t.names.size()) throw std::logic_error("sweep_columns: a row's values do not match its columns");
     for (std::size_t c = 0; c < w.row.size(); ++c) t.columns[c][r] = w.row[c];
-    t.status.push_back(to_string(out.result.status(r)));
+    t.status[r] = out.result.status(r);
   }
+  return t;
+}
+
+SweepTable sweep_table(const SweepOutput& out, bool rates) {
+  SweepColumns c = sweep_columns(out, rates);
+  SweepTable t;
+  t.names = std::move(c.names);
+  t.columns = std::move(c.columns);
+  t.status.reserve(c.rows());
+  for (SolveStatus s : c.status) t.status.push_back(to_string(s));
   return t;
 }
 
@@ -200,7 +217,7 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   const std::size_t rows = out.result.size();
   const std::size_t workers = batch_workers((rows + kRowsPerBlock - 1) / kRowsPerBlock, threads);
   if (workers <= 1) {
-    RowWork w(out);
+    RowWork w(out, others);
     for (std::size_t r = 0; r < rows; ++r) {
       append_table_row(table, r, w, sink.buffer());
       sink.flush_full();
@@ -211,14 +228,14 @@ void write_sweep_csv(const SweepOutput& out, bool rates, OutputSink& sink, int t
   // round's blocks in row order: two rounds of text are held, whatever the table's size. Each thread's row
   // buffers and text sit on cache lines of their own (appending to neighbouring strings would share them).
   struct alignas(64) Worker {
-    explicit Worker(const SweepOutput& out) : work(out) {}
+    Worker(const SweepOutput& out, const std::vector<int>& others) : work(out, others) {}
     RowWork work;
     std::string text;
   };
   const std::size_t per_round = workers * kRowsPerBlock;
   std::vector<Worker> worker;
   worker.reserve(workers);
-  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out);
+  for (std::size_t b = 0; b < workers; ++b) worker.emplace_back(out, others);
   std::vector<std::string> ready(workers);
   std::vector<std::future<void>> running;  // declared last: destroyed (waited for) before what it uses
   const auto start_round = [&](std::size_t first) {

@@ -1,7 +1,7 @@
 // The result table of a solved sweep: one column per quantity (the input, every other pair variable, the
 // rates, every link's world pose, the contact analysis, the residual) and one status per pose. The CLI's
-// --csv writes it (SweepTable::csv()); the Python module (python/) hands the same columns to NumPy, so both
-// give the same names and values by construction.
+// --csv writes it (SweepTable::csv()); the Python module (python/) hands the same columns to NumPy
+// (sweep_columns), so both give the same names and values by construction.
 //
 //   const io::SweepOutput out{scene, sweep, result, io::sweep_values(sweep)};
 //   const io::SweepTable table = io::sweep_table(out, /*rates=*/false);
@@ -60,6 +60,17 @@ struct SweepTable {
   std::string csv() const;
 };
 
+/// The same numbers by column, and each row's status as its code: what the Python module hands to NumPy
+/// (each column's buffer becomes an array's memory as it is, without a copy; the statuses become an array
+/// of str once, not one string per row).
+struct SweepColumns {
+  std::vector<std::string> names;            // as SweepTable::names
+  std::vector<std::vector<double>> columns;  // as SweepTable::columns
+  std::vector<SolveStatus> status;           // per row
+
+  std::size_t rows() const { return status.size(); }
+};
+
 /// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
 /// <link>.x, <link>.y, <link>.angle, (out.analysis) per cam or rolling pair P the columns P.pressure_angle,
 /// P.sliding, P.slide_to_roll, P.kappa1, P.kappa2, P.relative_curvature, per moving link <link>.accel and
@@ -67,6 +78,9 @@ struct SweepTable {
 /// status. Angles in degrees, lengths in scene units, rates per input unit. A pose without values (not
 /// solved) has NaN in every numeric column.
 SweepTable sweep_table(const SweepOutput& out, bool rates);
+
+/// The table of sweep_table (the same names and numbers) with the statuses as codes.
+SweepColumns sweep_columns(const SweepOutput& out, bool rates);
 
 /// The same table as CSV text (SweepTable::csv(), identical bytes) streamed row by row into `sink` (the
 /// CLI's --csv): no column of the table is held in memory. With `threads` other than 1 (0: one per core) the

@@ -93,6 +93,13 @@ template <class S> SE2<S> in_joint_frames(const Pair<S>& pair, const SE2<S>& p) 
   return pair.frame_b_identity ? left : SE2<S>(left * pair.frame_b.inverse());
 }
 
+/// The edge transform of a cam or rolling pair from its contact points a (on contour A) and b (on contour B),
+/// eq. (1): T_A Rot(pi) T_B^-1, where T_A Rot(pi) is T_A with its axis reversed (exact).
+template <class S> SE2<S> contact_transform(const ContourPoint<S>& a, const ContourPoint<S>& b) {
+  const SE2<S> tb = SE2<S>::from_axis(b.tangent.x(), b.tangent.y(), b.p);
+  return SE2<S>::from_axis(S(-a.tangent.x()), S(-a.tangent.y()), a.p) * tb.inverse();
+}
+
 /// Evaluates the pair into st (every field is written; contact only for cam and rolling pairs). A joint
 /// pair whose variable has not changed since st was last written is left as it is.
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
@@ -125,9 +132,7 @@ template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Con
   const ContourPoint<S>& a = st.contact[0];
   const ContourPoint<S>& b = st.contact[1];
   const SE2<S> ta = SE2<S>::from_axis(a.tangent.x(), a.tangent.y(), a.p);
-  const SE2<S> tb = SE2<S>::from_axis(b.tangent.x(), b.tangent.y(), b.p);
-  // eq. (1): T_A Rot(pi) T_B^-1; T_A Rot(pi) is T_A with its axis reversed (exact).
-  st.transform = SE2<S>::from_axis(S(-a.tangent.x()), S(-a.tangent.y()), a.p) * tb.inverse();
+  st.transform = contact_transform(a, b);
   st.twist[0] = ta.adjoint(Twist<S>(a.speed, S(0), a.turn_rate));
   st.twist[1] = ta.adjoint(Twist<S>(b.speed, S(0), S(-b.turn_rate)));
   if (qdot != nullptr && order >= 3) {
@@ -136,6 +141,20 @@ template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Con
     st.twist_rate[1] = lie_bracket<S>(st.twist[0] * qdot[0], st.twist[1]) +
                        ta.adjoint(Twist<S>(b.speed_rate, S(0), S(-b.turn_accel))) * qdot[1];
   }
+}
+
+/// The edge transform alone of the pair at its variables q: the transform evaluate_pair() writes, to the
+/// last bit, without the twists (positions only: a table of link poses).
+template <class S> SE2<S> pair_transform(const Pair<S>& pair, const std::vector<Contour<S>>& contours, const S* q) {
+  switch (pair.kind) {
+    case PairKind::Revolute: return in_joint_frames(pair, SE2<S>::rotation(q[0]));
+    case PairKind::Prismatic: return in_joint_frames(pair, SE2<S>::translation(Vec2<S>(q[0], S(0))));
+    case PairKind::Cam:
+    case PairKind::Rolling: break;
+  }
+  // The contact points as evaluate_pair computes them (order 2), so that the transforms are the same numbers.
+  return contact_transform(contour_point(contours[pair.contour_a].jet(q[0], 2), 2),
+                           contour_point(contours[pair.contour_b].jet(q[1], 2), 2));
 }
 
 template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,
