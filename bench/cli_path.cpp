@@ -259,11 +259,11 @@ int main(int argc, char** argv) {
   // The library on the scene as the CLI reads it.
   using namespace rollkin;
   const io::Scene scene = io::load_scene(scene_file);
-  io::Sweep sw = *scene.sweep;
+  Sweep sw = *scene.sweep;
   sw.from = -50;
   sw.to = 100;
   sw.step = 0.001;
-  const std::vector<double> inputs = io::sweep_inputs(sw);
+  const std::vector<double> inputs = sweep_inputs(sw);
   if (static_cast<long>(inputs.size()) != kPoses) {
     std::cerr << "rollkin_bench_cli: expected " << kPoses << " inputs, got " << inputs.size() << "\n";
     return 2;

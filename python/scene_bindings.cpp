@@ -137,7 +137,7 @@ py::dict nurbs(const PointArray& points, int degree, const py::object& knots, co
 
 py::object sweep_dict(const PyScene& s) {
   if (!s.scene->sweep) return py::none();
-  const rollkin::io::Sweep& sw = *s.scene->sweep;
+  const rollkin::Sweep& sw = *s.scene->sweep;
   py::dict d;
   d["input"] = sw.input;
   d["from"] = sw.from;

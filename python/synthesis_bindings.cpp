@@ -170,7 +170,7 @@ py::dict envelope(const PyScene& s, const std::string& link_a, const std::string
     VectorX<double> q = shared->guess;
     const SolveReport<double> assembly = assemble(mm, q, sd, shared->held);
     if (assembly.status == SolveStatus::CannotAssemble) throw rollkin::io::assembly_error(*shared, assembly.detail);
-    const SweepResult<double> result = sweep(mm, sd, q, assembly, shared->sweep->driver, rollkin::io::sweep_inputs(*shared->sweep));
+    const SweepResult<double> result = sweep(mm, sd, q, assembly, shared->sweep->driver, rollkin::sweep_inputs(*shared->sweep));
     const synthesis::SweepMotion motion(mm, result, a, b);
     return synthesis::envelope(synthesis::scene_envelope_problem(mm, motion, contour, start),
                                synthesis::EnvelopeOptions{tol, 256, 400000});

@@ -17,7 +17,7 @@ namespace rollkin::testing {
 /// not_reached rows with NaN).
 struct PaperSweep {
   io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
-  io::Sweep sw;
+  Sweep sw;
   std::vector<double> inputs, values;
   SweepResult<double> result;
 
@@ -38,8 +38,8 @@ struct PaperSweep {
     sw.from = -50;
     sw.to = to;
     sw.step = step;
-    inputs = io::sweep_inputs(sw);
-    values = io::sweep_values(sw);
+    inputs = sweep_inputs(sw);
+    values = sweep_values(sw);
     SolveData<double> sd(scene.mechanism);
     VectorX<double> q = scene.guess;
     const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);

@@ -197,7 +197,7 @@ BOOST_AUTO_TEST_CASE(paper_example_rolls_without_sliding_and_curvatures_match_cl
   VectorX<double> q = scene.guess;
   const auto assembly = assemble(m, q, sd, scene.held);
   BOOST_TEST_REQUIRE(assembly.ok());
-  const auto res = sweep(m, sd, q, assembly, scene.sweep->driver, io::sweep_inputs(*scene.sweep));
+  const auto res = sweep(m, sd, q, assembly, scene.sweep->driver, sweep_inputs(*scene.sweep));
   BOOST_TEST_REQUIRE(res.all_solved());
   const auto an = analyse_sweep(m, res);
   const int pair_a = m.find_pair("A"), pair_b = m.find_pair("B"), x = m.find_variable("A.x");

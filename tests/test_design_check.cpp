@@ -109,7 +109,7 @@ BOOST_AUTO_TEST_CASE(roller_larger_than_the_groove_vertex_radius_is_an_undercut_
   const double a = 3, b = 2, r = 1.5;  // b^2 / a = 4/3 < r
   const io::Scene scene = io::load_scene(kSource + "/tests/data/undercut_ellipse.json");
   const Mechanism<double>& m = scene.mechanism;
-  const SweepResult<double> res = swept(scene, io::sweep_inputs(*scene.sweep));
+  const SweepResult<double> res = swept(scene, sweep_inputs(*scene.sweep));
   BOOST_REQUIRE(res.all_solved());
   // The vertex (u = 0) is touched between two solved poses, at none of them.
   const int u_var = m.pairs[2].first_variable;
@@ -174,7 +174,7 @@ BOOST_AUTO_TEST_CASE(roller_smaller_than_the_groove_vertex_radius_fits) {
 BOOST_AUTO_TEST_CASE(two_non_circular_contours_interpenetrating_are_found_by_the_generic_test) {
   const double a = 3, b = 2, r = 1.5;
   const io::Scene scene = groove_with_round_ellipse(r);
-  const SweepResult<double> res = swept(scene, io::sweep_inputs(*scene.sweep));
+  const SweepResult<double> res = swept(scene, sweep_inputs(*scene.sweep));
   BOOST_REQUIRE(res.all_solved());
   const DesignCheck<double> check = check_design(scene.mechanism, res);
   const PairDesignCheck<double>& p = check.pairs.at(0);
@@ -219,7 +219,7 @@ BOOST_AUTO_TEST_CASE(paper_example_radii_are_the_parabola_closed_form_and_the_di
   BOOST_TEST(to_string(B.conformity) == to_string(Conformity::Conforming));
 
   // Over the scene's own sweep (-50 to 100 deg) the vertex is touched: radius 1/(2a) at x = 0.
-  const SweepResult<double> full = swept(scene, io::sweep_inputs(*scene.sweep));
+  const SweepResult<double> full = swept(scene, sweep_inputs(*scene.sweep));
   const DesignCheck<double> whole = check_design(m, full);
   BOOST_TEST(std::abs(whole.pairs[0].contours[0].min_radius() - 1 / (2 * a)) <= 1e-14);
   BOOST_TEST(std::abs(whole.pairs[0].contours[0].sharpest_convex.u) <= 1e-12);

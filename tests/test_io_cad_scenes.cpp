@@ -55,7 +55,7 @@ SweepResult<double> swept(const io::Scene& s) {
   VectorX<double> q = s.guess;
   const SolveReport<double> rep = assemble(m, q, sd, s.held);
   BOOST_REQUIRE_MESSAGE(rep.ok(), "assembly: " << to_string(rep.status));
-  return sweep(m, sd, q, rep, s.sweep->driver, io::sweep_inputs(*s.sweep));
+  return sweep(m, sd, q, rep, s.sweep->driver, sweep_inputs(*s.sweep));
 }
 
 /// The scene's own sweep, solved; every pose must be ok.

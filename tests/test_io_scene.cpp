@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(paper_example_loads_as_specified) {
   BOOST_TEST(m.pairs[3].frame_a.translation().y() == -2.0);
   BOOST_REQUIRE(s.sweep.has_value());
   BOOST_TEST(s.sweep->input == "O_A.theta2");
-  const std::vector<double> in = rollkin::io::sweep_inputs(*s.sweep);
+  const std::vector<double> in = rollkin::sweep_inputs(*s.sweep);
   BOOST_TEST(in.size() == 151u);
   BOOST_TEST(in.front() == deg_to_rad(-50.0), boost::test_tools::tolerance(1e-15));
   BOOST_TEST(in.back() == deg_to_rad(100.0), boost::test_tools::tolerance(1e-15));
@@ -113,28 +113,28 @@ BOOST_AUTO_TEST_CASE(other_examples_load) {
 // ---- sweep ------------------------------------------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(sweep_inputs_include_the_end_on_the_grid) {
-  rollkin::io::Sweep s;
+  rollkin::Sweep s;
   s.from = 0;
   s.to = 1;
   s.step = 0.1;
-  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 11u);
+  BOOST_TEST(rollkin::sweep_inputs(s).size() == 11u);
   s.to = 1.05;
-  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 11u);
+  BOOST_TEST(rollkin::sweep_inputs(s).size() == 11u);
   s.from = 10;
   s.to = 0;
   s.step = -2.5;
-  const auto down = rollkin::io::sweep_inputs(s);
+  const auto down = rollkin::sweep_inputs(s);
   BOOST_TEST(down.size() == 5u);
   BOOST_TEST(down.back() == 0.0);
   s.step = 2.5;
-  BOOST_CHECK_THROW(rollkin::io::sweep_inputs(s), std::invalid_argument);
+  BOOST_CHECK_THROW(rollkin::sweep_inputs(s), std::invalid_argument);
   s.step = 0;
-  BOOST_CHECK_THROW(rollkin::io::sweep_inputs(s), std::invalid_argument);
+  BOOST_CHECK_THROW(rollkin::sweep_inputs(s), std::invalid_argument);
   s.from = s.to = 3;
   s.step = 1;
-  BOOST_TEST(rollkin::io::sweep_inputs(s).size() == 1u);
+  BOOST_TEST(rollkin::sweep_inputs(s).size() == 1u);
   s.unit = deg_to_rad(1.0);
-  BOOST_TEST(rollkin::io::sweep_inputs(s).front() == deg_to_rad(3.0), boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(rollkin::sweep_inputs(s).front() == deg_to_rad(3.0), boost::test_tools::tolerance(1e-15));
 }
 
 BOOST_AUTO_TEST_CASE(radians_file_keeps_angles) {

@@ -69,12 +69,12 @@ BOOST_AUTO_TEST_CASE(a_run_solves_the_poses_of_a_direct_assembly_and_sweep) {
   BOOST_TEST(run.sweep().step_text == "0.5");
   BOOST_TEST_REQUIRE(run.inputs().size() == 361u);
 
-  io::Sweep sw = *scene->sweep;  // the same sweep built by hand
+  Sweep sw = *scene->sweep;  // the same sweep built by hand
   sw.to = 130;
   sw.step = 0.5;
-  const std::vector<double> inputs = io::sweep_inputs(sw);
+  const std::vector<double> inputs = sweep_inputs(sw);
   BOOST_TEST(run.inputs() == inputs);
-  BOOST_TEST(run.values() == io::sweep_values(sw));
+  BOOST_TEST(run.values() == sweep_values(sw));
   const Mechanism<double>& m = scene->mechanism;
   SolveData<double> sd_direct(m);
   VectorX<double> q_direct = scene->guess;
@@ -145,7 +145,7 @@ BOOST_AUTO_TEST_CASE(a_run_writes_the_table_of_the_direct_sweep) {
     VectorX<double> q_direct = scene->guess;
     const SolveReport<double> assembly_direct = assemble(m, q_direct, sd_direct, scene->held);
     const SweepResult<double> direct = sweep(m, sd_direct, q_direct, assembly_direct, run.sweep().driver, run.inputs());
-    const std::vector<double> values = io::sweep_values(run.sweep());
+    const std::vector<double> values = sweep_values(run.sweep());
     const io::SweepOutput out{*scene, run.sweep(), direct, values};
     BOOST_TEST((testing::read_text(csv) == io::sweep_table(out, true).csv()), (in_file ? "rows in a file" : "rows in memory"));
   }

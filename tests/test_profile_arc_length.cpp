@@ -404,7 +404,7 @@ SweepResult<double> solve_scene(const io::Scene& scene) {
   VectorX<double> q = scene.guess;
   const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);
   BOOST_TEST_REQUIRE(assembly.ok());
-  SweepResult<double> r = sweep(scene.mechanism, sd, q, assembly, scene.sweep->driver, io::sweep_inputs(*scene.sweep));
+  SweepResult<double> r = sweep(scene.mechanism, sd, q, assembly, scene.sweep->driver, sweep_inputs(*scene.sweep));
   BOOST_TEST_REQUIRE(r.all_solved());
   return r;
 }

@@ -129,11 +129,11 @@ namespace {
 /// 90 degrees by `step`; the sweep and the output's declaration made before counting.
 long count_csv(double step) {
   const io::Scene scene = io::load_scene(std::string(ROLLKIN_SOURCE_DIR) + "/examples/paper_fourbar.json");
-  io::Sweep sw = *scene.sweep;
+  Sweep sw = *scene.sweep;
   sw.from = -40;
   sw.to = 90;
   sw.step = step;
-  const std::vector<double> inputs = io::sweep_inputs(sw), values = io::sweep_values(sw);
+  const std::vector<double> inputs = sweep_inputs(sw), values = sweep_values(sw);
   SolveData<double> sd(scene.mechanism);
   VectorX<double> q = scene.guess;
   const SolveReport<double> assembly = assemble(scene.mechanism, q, sd, scene.held);

@@ -63,7 +63,7 @@ int run_centrodes(const CentrodesOptions& o) {
   const std::string file_a = o.out + "." + o.links[0] + ".txt", file_b = o.out + "." + o.links[1] + ".txt";
   output::SweepRun run = start_run(o.sweep, {{"--out (link A)", file_a, ""}, {"--out (link B)", file_b, ""}, {"--dxf", o.dxf, ""}});
   const io::Scene& scene = run.scene();
-  const io::Sweep& sw = run.sweep();
+  const Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   const int a = named_link(m, o.links[0]), b = named_link(m, o.links[1]);
 

@@ -23,7 +23,7 @@ std::string point_text(const io::Scene& scene, int variable, const TouchedPoint<
 }
 
 /// The curvature line(s) of one contour of a pair: its sharpest convex and concave points touched.
-std::vector<std::string> curvature_lines(const io::Scene& scene, const io::Sweep& sw, int variable,
+std::vector<std::string> curvature_lines(const io::Scene& scene, const Sweep& sw, int variable,
                                          const ContourCurvatureCheck<double>& c) {
   const std::string name = contour_name(scene.mechanism, c.contour);
   if (c.circle) {
@@ -42,7 +42,7 @@ std::vector<std::string> curvature_lines(const io::Scene& scene, const io::Sweep
 }
 
 /// The located message of a pair whose contours interpenetrate.
-std::string finding_line(const io::Scene& scene, const io::Sweep& sw, const PairDesignCheck<double>& d) {
+std::string finding_line(const io::Scene& scene, const Sweep& sw, const PairDesignCheck<double>& d) {
   const Mechanism<double>& m = scene.mechanism;
   const Pair<double>& p = m.pairs[d.pair];
   const std::string where = input_text(scene, sw, d.worst[0].input);
@@ -89,7 +89,7 @@ std::string roller_line(const Mechanism<double>& m, const PairDesignCheck<double
 }  // namespace
 
 /// The design check of a solved sweep (rollkin/design_check.hpp) as text.
-DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
+DesignReport design_report(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
   const DesignCheck<double> check = check_design(m, result);
   DesignReport out;
@@ -151,7 +151,7 @@ namespace {
 int run_check(const CheckOptions& o) {
   output::SweepRun run = start_run(o.sweep, {});
   const io::Scene& scene = run.scene();
-  const io::Sweep& sw = run.sweep();
+  const Sweep& sw = run.sweep();
   const std::vector<double>& inputs = run.inputs();
   const Mechanism<double>& m = scene.mechanism;
   SolveData<double> sd(m);

@@ -44,7 +44,7 @@ namespace {
 int run_reference(const ReferenceOptions& o) {
   output::SweepRun run = start_run(o.sweep, {{"--csv", o.csv, ""}});
   const io::Scene& scene = run.scene();
-  const io::Sweep& sw = run.sweep();
+  const Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   g_doing = "computing the reference sweep in MPFR";
   const ReferenceSweep ref = io::scene_reference(scene, sw, o.digits);

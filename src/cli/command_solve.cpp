@@ -56,7 +56,7 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
 /// --interference: contours sampled once in their links' frames and checked at every solved pose
 /// (solve/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
 /// file's units, with the chords' distance from the curves and the touch tolerance.
-std::vector<std::string> interference_lines(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result) {
+std::vector<std::string> interference_lines(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
   const SweepInterference si = check_interference(m, result);
   struct Run {
@@ -157,7 +157,7 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   for (const auto& [format, path] : o.files) files.push_back({"--" + format, path, format});
   output::SweepRun run = start_run(o.sweep, files, std::move(loaded));
   const io::Scene& scene = run.scene();
-  const io::Sweep& sw = run.sweep();
+  const Sweep& sw = run.sweep();
   const std::vector<double>& inputs = run.inputs();
   const Mechanism<double>& m = scene.mechanism;
 

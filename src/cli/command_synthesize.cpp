@@ -290,7 +290,7 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   const std::string txt = o.out + ".txt", dxf = o.out + ".dxf";
   output::SweepRun run = start_run(o.sweep, {{"--out (points)", txt, ""}, {"--out (DXF)", dxf, ""}});
   const io::Scene& scene = run.scene();
-  const io::Sweep& sw = run.sweep();
+  const Sweep& sw = run.sweep();
   const Mechanism<double>& m = scene.mechanism;
   const int a = m.find_link(o.links[0]), b = m.find_link(o.links[1]);
   if (a < 0 || b < 0) throw UsageError("--links: no link \"" + (a < 0 ? o.links[0] : o.links[1]) + "\" in the scene");

@@ -145,12 +145,12 @@ std::string with_scene_name(const std::string& pattern, const std::string& stem)
 
 // ---- messages and reports ---------------------------------------------------------------------------------
 
-std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal) {
+std::string input_text(const io::Scene& scene, const Sweep& sw, double internal) {
   const std::string unit = scene.unit_label(sw.variable);
   return sw.input + " = " + io::format_number(internal / sw.unit, 8) + (unit.empty() ? "" : " " + unit);
 }
 
-std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r) {
+std::string limit_line(const io::Scene& scene, const Sweep& sw, const SolveReport<double>& r) {
   const Mechanism<double>& m = scene.mechanism;
   const std::string where = input_text(scene, sw, r.limit_input);
   switch (r.status) {
@@ -175,7 +175,7 @@ std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveR
   }
 }
 
-std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SweepSummary<double>& summary,
+std::vector<std::string> sweep_problems(const io::Scene& scene, const Sweep& sw, const SweepSummary<double>& summary,
                                         const std::vector<double>& inputs) {
   std::vector<std::string> problems;
   const SolveReport<double>& assembly = summary.assembly;

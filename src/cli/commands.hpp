@@ -119,14 +119,14 @@ std::string with_scene_name(const std::string& pattern, const std::string& stem)
 // ---- messages and reports ---------------------------------------------------------------------------------
 
 /// "O_A.theta2 = -57.397 deg" in the file's units.
-std::string input_text(const io::Scene& scene, const io::Sweep& sw, double internal);
+std::string input_text(const io::Scene& scene, const Sweep& sw, double internal);
 
 /// One line per limit for stderr, the input in the file's units.
-std::string limit_line(const io::Scene& scene, const io::Sweep& sw, const SolveReport<double>& r);
+std::string limit_line(const io::Scene& scene, const Sweep& sw, const SolveReport<double>& r);
 
 /// One line per problem of a sweep: a failed assembly, each limit met, each singular pose (`inputs`: the
 /// sweep's requested inputs, internal units).
-std::vector<std::string> sweep_problems(const io::Scene& scene, const io::Sweep& sw, const SweepSummary<double>& summary,
+std::vector<std::string> sweep_problems(const io::Scene& scene, const Sweep& sw, const SweepSummary<double>& summary,
                                         const std::vector<double>& inputs);
 
 // ---- the design check (rollkin check, solve --verbose; src/cli/command_check.cpp) --------------------------
@@ -138,7 +138,7 @@ struct DesignReport {
 };
 
 /// The design check of a solved sweep (rollkin/design_check.hpp) as text.
-DesignReport design_report(const io::Scene& scene, const io::Sweep& sw, const SweepResult<double>& result);
+DesignReport design_report(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result);
 
 
 /// Rank of the full (scaled) constraint Jacobian at the pose sd was last evaluated at (solve --verbose).

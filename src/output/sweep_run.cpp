@@ -10,13 +10,13 @@ namespace rollkin::output {
 namespace {
 
 /// The sweep to run: the scene's, with the request's overrides (their text as given), checked.
-io::Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r, const RequestNames& names) {
-  std::optional<io::Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
+Sweep requested_sweep(const io::Scene& scene, const SweepRequest& r, const RequestNames& names) {
+  std::optional<Sweep> s = io::requested_sweep(scene, r.from, r.to, r.step);
   if (!s) throw SweepRequestError(scene.file + " has no \"sweep\"; give " + names.range_list);
   if (r.from && !r.from_text.empty()) s->from_text = r.from_text;
   if (r.to && !r.to_text.empty()) s->to_text = r.to_text;
   if (r.step && !r.step_text.empty()) s->step_text = r.step_text;
-  const std::string bad = io::check_sweep(*s);
+  const std::string bad = check_sweep(*s);
   if (!bad.empty()) throw SweepRequestError(names.range + ": " + bad);
   return *s;
 }
@@ -36,7 +36,7 @@ SweepRun::SweepRun(std::shared_ptr<const io::Scene> scene, std::vector<io::Input
 }
 
 const std::vector<double>& SweepRun::values() {
-  if (!values_) values_ = io::sweep_values(sweep_);
+  if (!values_) values_ = sweep_values(sweep_);
   return *values_;
 }
 

@@ -6,7 +6,7 @@
 //   rollkin::VectorX<double> q = scene.guess;
 //   auto assembly = rollkin::assemble(scene.mechanism, q, sd, scene.held);
 //   auto result = rollkin::sweep(scene.mechanism, sd, q, assembly, scene.sweep->driver,
-//                                rollkin::io::sweep_inputs(*scene.sweep));
+//                                rollkin::sweep_inputs(*scene.sweep));
 //
 // Every problem with the file is an InputError naming the scene file, the JSON path of the offending value
 // (e.g. "pairs[2].contours[1]") and what was expected. Internally angles are radians; the file's angle unit
@@ -25,12 +25,6 @@
 #include <vector>
 
 namespace rollkin::io {
-
-// The sweep grid lives in the solve layer (solve/sweep_grid.hpp); these names keep io:: callers compiling.
-using rollkin::Sweep;
-using rollkin::sweep_inputs;
-using rollkin::sweep_values;
-using rollkin::check_sweep;
 
 struct Scene {
   Mechanism<double> mechanism;       // finalized, drivers set from "inputs"

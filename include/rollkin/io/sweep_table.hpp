@@ -3,7 +3,7 @@
 // --csv writes it (SweepTable::csv()); the Python module (python/) hands the same columns to NumPy
 // (sweep_columns), so both give the same names and values by construction.
 //
-//   const io::SweepOutput out{scene, sweep, result, io::sweep_values(sweep)};
+//   const io::SweepOutput out{scene, sweep, result, sweep_values(sweep)};
 //   const io::SweepTable table = io::sweep_table(out, /*rates=*/false);
 //   std::string text = table.csv();
 #pragma once

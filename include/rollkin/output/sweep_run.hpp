@@ -91,10 +91,10 @@ class SweepRun {
   const std::shared_ptr<const io::Scene>& shared_scene() const { return scene_; }
   const Mechanism<double>& mechanism() const { return scene_->mechanism; }
   /// The requested sweep (the scene's, with the overrides).
-  const io::Sweep& sweep() const { return sweep_; }
+  const Sweep& sweep() const { return sweep_; }
   /// Its input values in internal units (radians for an angle), within the bound.
   const std::vector<double>& inputs() const { return inputs_; }
-  /// The same values in the file's units (io::sweep_values: the exact decimal grid for a "deg" scene), made
+  /// The same values in the file's units (sweep_values: the exact decimal grid for a "deg" scene), made
   /// on the first call: the table's input column.
   const std::vector<double>& values();
 
@@ -139,7 +139,7 @@ class SweepRun {
   std::unique_ptr<io::OutputSet> outputs_;  // on the heap: `files_` refers to it, and a run is moved
   SweepFiles files_;
   std::map<std::string, std::size_t> given_;  // label -> index in `outputs_`, for the files of format "" asked for
-  io::Sweep sweep_;
+  Sweep sweep_;
   std::vector<double> inputs_;
   std::optional<std::vector<double>> values_;
 };
