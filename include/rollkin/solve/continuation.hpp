@@ -85,6 +85,34 @@ template <class S> void hermite(const VectorX<S>& q0, const VectorX<S>& v0, cons
   *rate = (d00 / dt) * q0 + d10 * v0 + (d01 / dt) * q1 + d11 * v1;
 }
 
+/// The scaled residual that rounding alone gives a pose near q whose values are computed, not solved (an
+/// interpolant): each unknown off by eps |q_c| moves row r by |J_rc q_c| eps, so the scaled rows by up to
+/// eps max_r w_r sum_c |J_rc q_c| (sd's Jacobian, evaluated near q, in either store; drivers are held exactly).
+/// It grows with the values (angles after turns) and the lever arms of the loops, and is of the order of
+/// the interpolated residuals where the cubic is exact. A loop's pattern entries touch its three rows only,
+/// and each rolling row's two entries are adjacent (JacobianPattern), so no buffer is needed.
+template <class S> S rounding_residual(const Mechanism<S>& m, const SolveData<S>& sd, const VectorX<S>& q) {
+  using std::abs;
+  using std::max;
+  const KinematicsData<S>& kin = sd.kin;
+  const JacobianPattern& p = kin.pattern;
+  const auto term = [&](int e) {
+    const int r = p.row[static_cast<std::size_t>(e)], c = p.column[static_cast<std::size_t>(e)];
+    if (std::find(m.drivers.begin(), m.drivers.end(), c) != m.drivers.end()) return S(0);
+    const S& j = kin.sparse ? kin.jacobian_values(e) : kin.jacobian(r, c);
+    return S(abs(j * q(c)) * sd.row_weight(r));
+  };
+  S worst(0);
+  for (std::size_t l = 0; l + 1 < p.loop_begin.size(); ++l) {
+    S rows[3] = {S(0), S(0), S(0)};
+    for (int e = p.loop_begin[l]; e < p.loop_begin[l + 1]; ++e)
+      rows[p.row[static_cast<std::size_t>(e)] - 3 * static_cast<int>(l)] += term(e);
+    worst = max(worst, max(rows[0], max(rows[1], rows[2])));
+  }
+  for (int e = p.loop_begin.back(); e + 1 < p.size(); e += 2) worst = max(worst, S(term(e) + term(e + 1)));
+  return epsilon<S>() * worst;
+}
+
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
 /// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
@@ -157,11 +185,14 @@ template <class S> class Tracer {
   const SolveReport<S>& interpolated_report() const { return interpolated_; }
 
   /// Back to the pose the last stride started from; the span shrinks to half the distance to the input
-  /// whose interpolation failed (t).
+  /// whose interpolation failed (t), unless its residual is within twice what the rounding of its values
+  /// alone gives (rounding_residual): such a failure says nothing about the cubic's error, which shrinking
+  /// would not lower (the input is solved instead, and the span kept).
   void undo_stride(const S& t) {
     using std::abs;
+    const bool round_off = interpolated_.residual <= S(2) * rounding_residual(m_, sd_, pose_q_);
     restore_stride_start();
-    span_ = abs(t - q_(var_)) / S(2);
+    if (!round_off) span_ = abs(t - q_(var_)) / S(2);
   }
 
   /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
@@ -169,20 +200,26 @@ template <class S> class Tracer {
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
   /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
   /// (on a grid too coarse to interpolate, no stride is tried and undone).
-  /// `end_residual` is the residual of the stride's end, solved: the round-off level of the residual at these
-  /// poses, which grows with the number of rows and the size of their terms (trains of many rolling disks).
-  /// Interpolated poses within twice it show no error of the cubic at all, only round-off, and
-  /// aiming that at 8 epsilon would shrink the span at every stride until nothing is interpolated: the span
-  /// doubles instead, as when the prediction met the tolerance. Every interpolated pose is still verified
-  /// (interpolation_verified), so the span decides the cost only, never what is reported.
+  /// The round-off level of the residual at these poses is the larger of `end_residual`, the residual of the
+  /// stride's end (solved), and the residual the rounding of interpolated values alone gives
+  /// (rounding_residual): a solved pose's residual can lie well below the latter, Newton having fitted its
+  /// values to the rounding of the evaluation (a pose refined by detail::worth_refining, as in trains of
+  /// many rolling disks, whose condition is large). Both grow with the size of the rows' terms (angles after
+  /// turns, long loops). Interpolated poses within twice that level show no error of the cubic at all, only
+  /// round-off, and aiming that at 8 epsilon would shrink the span at every stride until nothing is
+  /// interpolated: the span doubles instead, as when the prediction met the tolerance. Every interpolated
+  /// pose is still verified (interpolation_verified), so the span decides the cost only, never what is
+  /// reported.
   void update_span(const S& largest, bool prediction_met, const S& end_residual) {
     using std::abs;
+    using std::max;
     using std::min;
     using std::sqrt;
     const S target = S(8) * epsilon<S>();
+    const S round_off = max(end_residual, rounding_residual(m_, sd_, q_));
     S growth(prediction_met ? 2 : 1);
     if (largest > S(0))
-      growth = largest <= S(2) * end_residual ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
+      growth = largest <= S(2) * round_off ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
     span_ = min(S(abs(q_(var_) - q_prev_(var_)) * min(growth, S(2))), max_step_);
   }
 
