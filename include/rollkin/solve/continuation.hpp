@@ -85,34 +85,6 @@ template <class S> void hermite(const VectorX<S>& q0, const VectorX<S>& v0, cons
   *rate = (d00 / dt) * q0 + d10 * v0 + (d01 / dt) * q1 + d11 * v1;
 }
 
-/// The scaled residual that rounding alone gives a pose near q whose values are computed, not solved (an
-/// interpolant): each unknown off by eps |q_c| moves row r by |J_rc q_c| eps, so the scaled rows by up to
-/// eps max_r w_r sum_c |J_rc q_c| (sd's Jacobian, evaluated near q, in either store; drivers are held exactly).
-/// It grows with the values (angles after turns) and the lever arms of the loops, and is of the order of
-/// the interpolated residuals where the cubic is exact. A loop's pattern entries touch its three rows only,
-/// and each rolling row's two entries are adjacent (JacobianPattern), so no buffer is needed.
-template <class S> S rounding_residual(const Mechanism<S>& m, const SolveData<S>& sd, const VectorX<S>& q) {
-  using std::abs;
-  using std::max;
-  const KinematicsData<S>& kin = sd.kin;
-  const JacobianPattern& p = kin.pattern;
-  const auto term = [&](int e) {
-    const int r = p.row[static_cast<std::size_t>(e)], c = p.column[static_cast<std::size_t>(e)];
-    if (std::find(m.drivers.begin(), m.drivers.end(), c) != m.drivers.end()) return S(0);
-    const S& j = kin.sparse ? kin.jacobian_values(e) : kin.jacobian(r, c);
-    return S(abs(j * q(c)) * sd.row_weight(r));
-  };
-  S worst(0);
-  for (std::size_t l = 0; l + 1 < p.loop_begin.size(); ++l) {
-    S rows[3] = {S(0), S(0), S(0)};
-    for (int e = p.loop_begin[l]; e < p.loop_begin[l + 1]; ++e)
-      rows[p.row[static_cast<std::size_t>(e)] - 3 * static_cast<int>(l)] += term(e);
-    worst = max(worst, max(rows[0], max(rows[1], rows[2])));
-  }
-  for (int e = p.loop_begin.back(); e + 1 < p.size(); e += 2) worst = max(worst, S(term(e) + term(e + 1)));
-  return epsilon<S>() * worst;
-}
-
 /// Follows one branch along one driver. Holds the current pose and its velocity (and the previous ones for
 /// the Hermite predictor); all buffers are allocated once.
 template <class S> class Tracer {
@@ -183,16 +155,15 @@ template <class S> class Tracer {
   }
   const VectorX<S>& interpolated_pose() const { return pose_q_; }
   const SolveReport<S>& interpolated_report() const { return interpolated_; }
+  /// Newton's residual tolerance (NewtonSettings) of the solves.
+  const S& newton_tolerance() const { return sd_.settings.residual_tolerance; }
 
   /// Back to the pose the last stride started from; the span shrinks to half the distance to the input
-  /// whose interpolation failed (t), unless its residual is within twice what the rounding of its values
-  /// alone gives (rounding_residual): such a failure says nothing about the cubic's error, which shrinking
-  /// would not lower (the input is solved instead, and the span kept).
+  /// whose interpolation failed (t).
   void undo_stride(const S& t) {
     using std::abs;
-    const bool round_off = interpolated_.residual <= S(2) * rounding_residual(m_, sd_, pose_q_);
     restore_stride_start();
-    if (!round_off) span_ = abs(t - q_(var_)) / S(2);
+    span_ = abs(t - q_(var_)) / S(2);
   }
 
   /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
@@ -200,23 +171,19 @@ template <class S> class Tracer {
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
   /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
   /// (on a grid too coarse to interpolate, no stride is tried and undone).
-  /// The round-off level of the residual at these poses is the larger of `end_residual`, the residual of the
-  /// stride's end (solved), and the residual the rounding of interpolated values alone gives
-  /// (rounding_residual): a solved pose's residual can lie well below the latter, Newton having fitted its
-  /// values to the rounding of the evaluation (a pose refined by detail::worth_refining, as in trains of
-  /// many rolling disks, whose condition is large). Both grow with the size of the rows' terms (angles after
-  /// turns, long loops). Interpolated poses within twice that level show no error of the cubic at all, only
-  /// round-off, and aiming that at 8 epsilon would shrink the span at every stride until nothing is
-  /// interpolated: the span doubles instead, as when the prediction met the tolerance. Every interpolated
-  /// pose is still verified (interpolation_verified), so the span decides the cost only, never what is
-  /// reported.
-  void update_span(const S& largest, bool prediction_met, const S& end_residual) {
+  /// `round_off` is the round-off level of the residual at these poses (interpolate_stride: the larger of
+  /// the stride end's residual, solved, and the residuals of the interpolated poses next to the stride's
+  /// ends, where the cubic's error is a fifth of its largest), which grows with the number of rows and the size of
+  /// their terms (trains of many rolling disks, angles after turns). Interpolated poses within twice it show
+  /// no error of the cubic at all, only round-off, and aiming that at 8 epsilon would shrink the span at
+  /// every stride until nothing is interpolated: the span doubles instead, as when the prediction met the
+  /// tolerance. Every interpolated pose is still verified (interpolation_verified), so the span decides the
+  /// cost only, never what is reported.
+  void update_span(const S& largest, bool prediction_met, const S& round_off) {
     using std::abs;
-    using std::max;
     using std::min;
     using std::sqrt;
     const S target = S(8) * epsilon<S>();
-    const S round_off = max(end_residual, rounding_residual(m_, sd_, q_));
     S growth(prediction_met ? 2 : 1);
     if (largest > S(0))
       growth = largest <= S(2) * round_off ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
@@ -600,16 +567,26 @@ std::size_t interpolate_stride(Tracer<S>& tracer, const std::vector<S>& inputs, 
   while (end + 1 < side.size() && abs(inputs[side[end + 1]] - from) <= tracer.interpolation_span()) ++end;
   SolveReport<S> rep;
   if (!tracer.stride(inputs[side[end]], rep)) return 0;
-  S largest(0);
+  // The cubic's error is 16 s^2 (1 - s)^2 times its largest at the fraction s of the stride: within an
+  // eighth of either end it is a fifth of that, and the residuals there show the round-off level.
+  const S length = inputs[side[end]] - from;
+  S largest(0), near_ends(0);
   for (std::size_t j = k; j < end; ++j) {
-    largest = max(largest, tracer.interpolate(inputs[side[j]]));
+    const S residual = tracer.interpolate(inputs[side[j]]);
+    largest = max(largest, residual);
+    const S s = (inputs[side[j]] - from) / length;
+    if (s <= S(1) / S(8) || s >= S(7) / S(8)) near_ends = max(near_ends, residual);
     if (!tracer.interpolation_verified()) {
       tracer.undo_stride(inputs[side[j]]);
       return j - k;
     }
     out.set_interpolated_pose(side[j], tracer.interpolated_pose(), tracer.interpolated_report());
   }
-  tracer.update_span(largest, rep.iterations == 0, rep.residual);
+  // Where the condition times Newton's tolerance exceeds eps^(2/3), a converged prediction takes one
+  // refining step (detail::worth_refining) and reports one iteration although it met the tolerance.
+  const bool refined = rep.condition * tracer.newton_tolerance() > tolerance<S>(S(2) / S(3));
+  const bool prediction_met = rep.iterations == 0 || (rep.iterations == 1 && refined);
+  tracer.update_span(largest, prediction_met, max(rep.residual, near_ends));
   out.set_pose(side[end], tracer.q(), tracer.v(), rep);
   return end + 1 - k;
 }
