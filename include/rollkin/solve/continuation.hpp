@@ -169,7 +169,7 @@ template <class S> class Tracer {
   /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
   /// `largest`: that residual scales as span^4 and is aimed at 8 epsilon, the span at most twice the stride
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
-  /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
+  /// already met Newton's tolerance (no iteration but the refining step: the cubic is that accurate over the stride), else keeps it
   /// (on a grid too coarse to interpolate, no stride is tried and undone).
   /// `round_off` is the round-off level of the residual at these poses (interpolate_stride: the larger of
   /// the stride end's residual, solved, and the residuals of the interpolated poses next to the stride's
