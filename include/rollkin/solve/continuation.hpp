@@ -169,12 +169,12 @@ template <class S> class Tracer {
   /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
   /// `largest`: that residual scales as span^4 and is aimed at 8 epsilon, the span at most twice the stride
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
-  /// already met Newton's tolerance (no iteration but the refining step: the cubic is that accurate over the stride), else keeps it
-  /// (on a grid too coarse to interpolate, no stride is tried and undone).
+  /// already met Newton's tolerance (no iteration but the refining step: the cubic is that accurate over
+  /// the stride), else keeps it (on a grid too coarse to interpolate, no stride is tried and undone).
   /// `round_off` is the round-off level of the residual at these poses (interpolate_stride: the larger of
   /// the stride end's residual, solved, and the residuals of the interpolated poses next to the stride's
-  /// ends, where the cubic's error is a fifth of its largest), which grows with the number of rows and the size of
-  /// their terms (trains of many rolling disks, angles after turns). Interpolated poses within twice it show
+  /// ends, where the cubic's error is a fifth of its largest), which grows with the number of rows and the
+  /// size of their terms (trains of many rolling disks, angles after turns). Interpolated poses within twice it show
   /// no error of the cubic at all, only round-off, and aiming that at 8 epsilon would shrink the span at
   /// every stride until nothing is interpolated: the span doubles instead, as when the prediction met the
   /// tolerance. Every interpolated pose is still verified (interpolation_verified), so the span decides the
