@@ -123,7 +123,7 @@ BOOST_AUTO_TEST_CASE(fine_grid_at_the_round_off_floor_keeps_interpolating) {
   // stride's end lies below that round-off: with 65 disks (condition 9.5e3) Newton refines the stride ends
   // to 2-4 epsilon while the interpolated poses' round-off reaches 8; compared with the end's residual alone,
   // the span shrank at most strides (3,520, 3,518 and 3,271 interpolated, 288 strides with 65 disks against
-  // 80 with 9). With the residuals next to the stride's ends as the round-off level: 3,519, 3,520 and 3,485.
+  // 80 with 9). With the residuals next to the stride's ends as the round-off level: 3,519, 3,520 and 3,473.
   // Each interpolated pose agrees with sweep()'s solved one to 1e-13, and to 1e-12 with 65 disks, whose 192
   // unknowns are solved only to their larger condition times round-off.
   std::vector<double> inputs;
