@@ -120,15 +120,19 @@ BOOST_AUTO_TEST_CASE(fine_grid_at_the_round_off_floor_keeps_interpolating) {
   // exact and the interpolated poses' residuals are round-off alone, which grows with the number of rows; the
   // old rule (aiming at 8 epsilon) shrank the span whenever it was above 5.2 epsilon. It must not shrink on
   // round-off:
-  // the old rule interpolated 2,473, 1,963 and 340 of these 3,601 poses with 3, 9 and 65 disks (now 3,520,
-  // 3,518 and 3,271). Each interpolated pose agrees with sweep()'s solved one to 1e-13, and
-  // to 1e-12 with 65 disks, whose 192 unknowns are solved only to their larger condition times round-off.
+  // the old rule interpolated 2,473, 1,963 and 340 of these 3,601 poses with 3, 9 and 65 disks. Nor when the
+  // stride's end lies below that round-off: with 65 disks (condition 9.5e3) Newton refines the stride ends
+  // to 2-4 epsilon while the interpolated poses' round-off reaches 8; compared with the end's residual alone,
+  // the span shrank at most strides (3,520, 3,518 and 3,271 interpolated, 288 strides with 65 disks against
+  // 80 with 9). With the residuals next to the stride's ends as the round-off level: 3,519, 3,520 and 3,473.
+  // Each interpolated pose agrees with sweep()'s solved one to 1e-13, and to 1e-12 with 65 disks, whose 192
+  // unknowns are solved only to their larger condition times round-off.
   std::vector<double> inputs;
   for (int k = 0; k <= 3600; ++k) inputs.push_back(k * 0.1 * pi<double>() / 180);
   for (int n : {2, 8, 64}) {
     BOOST_TEST_CONTEXT("train of " << n + 1 << " disks") {
       const std::size_t interpolated = check_interpolated(disk_train<double>(n), inputs, n < 64 ? 1e-13 : 1e-12);
-      BOOST_TEST(interpolated > inputs.size() * 3 / 4);
+      BOOST_TEST(interpolated > inputs.size() * 19 / 20);
     }
   }
 }

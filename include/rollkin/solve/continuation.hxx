@@ -100,6 +100,8 @@ template <class S> class Tracer {
   }
   const VectorX<S>& interpolated_pose() const { return pose_q_; }
   const SolveReport<S>& interpolated_report() const { return interpolated_; }
+  /// Newton's residual tolerance (NewtonSettings) of the solves.
+  const S& newton_tolerance() const { return sd_.settings.residual_tolerance; }
 
   /// Back to the pose the last stride started from; the span shrinks to half the distance to the input
   /// whose interpolation failed (t).
@@ -112,22 +114,24 @@ template <class S> class Tracer {
   /// The next interpolation span after a completed stride whose interpolated poses' largest residual was
   /// `largest`: that residual scales as span^4 and is aimed at 8 epsilon, the span at most twice the stride
   /// and within max_step. A stride that interpolated nothing doubles the span when its end's prediction
-  /// already met Newton's tolerance (no iteration: the cubic is that accurate over the stride), else keeps it
-  /// (on a grid too coarse to interpolate, no stride is tried and undone).
-  /// `end_residual` is the residual of the stride's end, solved: the round-off level of the residual at these
-  /// poses, which grows with the number of rows and the size of their terms (trains of many rolling disks).
-  /// Interpolated poses within twice it show no error of the cubic at all, only round-off, and
-  /// aiming that at 8 epsilon would shrink the span at every stride until nothing is interpolated: the span
-  /// doubles instead, as when the prediction met the tolerance. Every interpolated pose is still verified
-  /// (interpolation_verified), so the span decides the cost only, never what is reported.
-  void update_span(const S& largest, bool prediction_met, const S& end_residual) {
+  /// already met Newton's tolerance (no iteration but the refining step: the cubic is that accurate over
+  /// the stride), else keeps it (on a grid too coarse to interpolate, no stride is tried and undone).
+  /// `round_off` is the round-off level of the residual at these poses (interpolate_stride: the larger of
+  /// the stride end's residual, solved, and the residuals of the interpolated poses next to the stride's
+  /// ends, where the cubic's error is a fifth of its largest), which grows with the number of rows and the
+  /// size of their terms (trains of many rolling disks, angles after turns). Interpolated poses within twice it show
+  /// no error of the cubic at all, only round-off, and aiming that at 8 epsilon would shrink the span at
+  /// every stride until nothing is interpolated: the span doubles instead, as when the prediction met the
+  /// tolerance. Every interpolated pose is still verified (interpolation_verified), so the span decides the
+  /// cost only, never what is reported.
+  void update_span(const S& largest, bool prediction_met, const S& round_off) {
     using std::abs;
     using std::min;
     using std::sqrt;
     const S target = S(8) * epsilon<S>();
     S growth(prediction_met ? 2 : 1);
     if (largest > S(0))
-      growth = largest <= S(2) * end_residual ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
+      growth = largest <= S(2) * round_off ? S(2) : S(S(9) / S(10) * sqrt(sqrt(S(target / largest))));
     span_ = min(S(abs(q_(var_) - q_prev_(var_)) * min(growth, S(2))), max_step_);
   }
 
@@ -505,16 +509,26 @@ std::size_t interpolate_stride(Tracer<S>& tracer, const std::vector<S>& inputs, 
   while (end + 1 < side.size() && abs(inputs[side[end + 1]] - from) <= tracer.interpolation_span()) ++end;
   SolveReport<S> rep;
   if (!tracer.stride(inputs[side[end]], rep)) return 0;
-  S largest(0);
+  // The cubic's error is 16 s^2 (1 - s)^2 times its largest at the fraction s of the stride: within an
+  // eighth of either end it is a fifth of that, and the residuals there show the round-off level.
+  const S length = inputs[side[end]] - from;
+  S largest(0), near_ends(0);
   for (std::size_t j = k; j < end; ++j) {
-    largest = max(largest, tracer.interpolate(inputs[side[j]]));
+    const S residual = tracer.interpolate(inputs[side[j]]);
+    largest = max(largest, residual);
+    const S s = (inputs[side[j]] - from) / length;
+    if (s <= S(1) / S(8) || s >= S(7) / S(8)) near_ends = max(near_ends, residual);
     if (!tracer.interpolation_verified()) {
       tracer.undo_stride(inputs[side[j]]);
       return j - k;
     }
     out.set_interpolated_pose(side[j], tracer.interpolated_pose(), tracer.interpolated_report());
   }
-  tracer.update_span(largest, rep.iterations == 0, rep.residual);
+  // Where the condition times Newton's tolerance exceeds eps^(2/3), a converged prediction takes one
+  // refining step (detail::worth_refining) and reports one iteration although it met the tolerance.
+  const bool refined = rep.condition * tracer.newton_tolerance() > tolerance<S>(S(2) / S(3));
+  const bool prediction_met = rep.iterations == 0 || (rep.iterations == 1 && refined);
+  tracer.update_span(largest, prediction_met, max(rep.residual, near_ends));
   out.set_pose(side[end], tracer.q(), tracer.v(), rep);
   return end + 1 - k;
 }
