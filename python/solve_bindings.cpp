@@ -114,12 +114,44 @@ void run_all(const std::shared_ptr<std::vector<Job>>& jobs, const Request& r, in
   });
 }
 
-/// A column as a float64 array over its own buffer: the vector is moved into the array's base object, so
-/// the numbers are not copied.
-py::array_t<double> column_array(std::vector<double>&& column) {
-  auto* owner = new std::vector<double>(std::move(column));
-  const py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>(static_cast<py::ssize_t>(owner->size()), owner->data(), base);
+/// The column names of the tables as Python str, made once for every table with the same names (the
+/// variants of a batch): each name is encoded once per call, not once per table.
+class ColumnKeys {
+ public:
+  const std::vector<py::str>& of(const std::vector<std::string>& names) {
+    if (names != names_) {
+      names_ = names;
+      keys_.clear();
+      for (const std::string& n : names) keys_.emplace_back(n);
+    }
+    return keys_;
+  }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<py::str> keys_;
+};
+
+/// Every column of `t` as a float64 array over the table's block, as it is (no copy): one capsule owns the
+/// block and each array holds a reference to it, so the block lives while any of its arrays does. Made with
+/// NumPy's C API (PyArray_NewFromDescr, as pybind11's array does, without its shape and strides vectors).
+void add_columns(rollkin::io::SweepColumns& t, const std::vector<py::str>& keys, py::dict& out) {
+  if (!t.values) return;  // no table (never built)
+  const std::size_t rows = t.rows();
+  double* const block = t.values.get();
+  const py::capsule owner(block, [](void* p) { delete[] static_cast<double*>(p); });
+  t.values.release();  // the capsule owns the block now
+  auto& api = py::detail::npy_api::get();
+  const py::dtype f8 = py::dtype::of<double>();
+  Py_intptr_t shape = static_cast<Py_intptr_t>(rows), stride = sizeof(double);
+  for (std::size_t c = 0; c < keys.size(); ++c) {
+    const auto array = py::reinterpret_steal<py::object>(
+        api.PyArray_NewFromDescr_(api.PyArray_Type_, f8.inc_ref().ptr(), 1, &shape, &stride, block + c * rows,
+                                  py::detail::npy_api::NPY_ARRAY_WRITEABLE_, nullptr));
+    if (!array) throw py::error_already_set();
+    if (api.PyArray_SetBaseObject_(array.ptr(), owner.inc_ref().ptr()) != 0) throw py::error_already_set();
+    if (PyDict_SetItem(out.ptr(), keys[c].ptr(), array.ptr()) != 0) throw py::error_already_set();
+  }
 }
 
 /// The statuses as a NumPy array of str (dtype <U width of the longest present): each distinct status's
@@ -145,12 +177,12 @@ py::array status_array(const std::vector<rollkin::SolveStatus>& status) {
 }
 
 /// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
-/// assembled also "error": the InputError message Scene.solve would raise for it. The columns move into the
-/// arrays: the job's table is empty afterwards.
-py::dict to_dict(Job& job) {
+/// assembled also "error": the InputError message Scene.solve would raise for it. The columns' block moves
+/// into the arrays: the job's table has no values afterwards.
+py::dict to_dict(Job& job, ColumnKeys& keys) {
   rollkin::io::SweepColumns& t = job.table;
   py::dict out;
-  for (std::size_t c = 0; c < t.names.size(); ++c) out[py::str(t.names[c])] = column_array(std::move(t.columns[c]));
+  add_columns(t, keys.of(t.names), out);
   out["status"] = status_array(t.status);
   if (job.assembly.status == rollkin::SolveStatus::CannotAssemble)
     out["error"] = rollkin::io::assembly_error(job.run.scene(), job.assembly.detail).what();
@@ -172,7 +204,8 @@ Job solved(rollkin::output::SweepRun run, const Request& r, bool keep_result) {
 
 py::dict solve(const PyScene& s, const Request& r) {
   Job job = solved(start_run(s, r), r, false);
-  return to_dict(job);
+  ColumnKeys keys;
+  return to_dict(job, keys);
 }
 
 // ---- files -----------------------------------------------------------------------------------------------
@@ -185,7 +218,8 @@ py::dict write(const PyScene& s, const Request& r, const std::vector<std::pair<s
     if (!path.is_none()) outputs.push_back({format, path_argument(path, format.c_str()), format});
   Job job = solved(start_run(s, r, outputs), r, true);
   job.run.write(job.run.output(*job.result, r.analysis), rollkin::output::WriteOptions{r.rates, 1});
-  return to_dict(job);
+  ColumnKeys keys;
+  return to_dict(job, keys);
 }
 
 // ---- centrodes and the MPFR reference ----------------------------------------------------------------------
@@ -287,8 +321,9 @@ py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int th
   run_all(jobs, r, threads);
   for (const Job& j : *jobs)
     if (j.error) std::rethrow_exception(j.error);
-  py::list out;
-  for (Job& j : *jobs) out.append(to_dict(j));
+  py::list out(jobs->size());
+  ColumnKeys keys;
+  for (std::size_t k = 0; k < jobs->size(); ++k) out[k] = to_dict((*jobs)[k], keys);
   return out;
 }
 

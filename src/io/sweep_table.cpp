@@ -41,7 +41,8 @@ void analysis_columns(const Mechanism<double>& m, int input, std::vector<std::st
 /// The analysis of one pose in output units: pressure angle in degrees, sliding per unit of the input's
 /// output unit (per degree for an angle input, like the rate columns), curvatures in 1/scene unit, angular
 /// accelerations in degrees per input unit squared, jerks per input unit cubed.
-void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, std::vector<double>& row) {
+template <class Row>
+void analysis_values(const Mechanism<double>& m, const PoseAnalysis<double>& a, double in_scale, Row& row) {
   const double degrees = from_radians(1.0, kOutputAngle);
   for (const ContactAnalysis<double>& c : a.contacts) {
     row.push_back(c.pressure_angle * degrees);
@@ -98,16 +99,27 @@ struct RowWork {
   VectorX<double> q;
   std::vector<SE2<double>> link_pose;
   std::optional<AnalysisData<double>> analysis_data;
-  std::vector<double> row;
+  std::vector<double> row;  // a row of the CSV
 };
 
-/// The numeric values of row r into w.row, in the order of column_names.
-void row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r, RowWork& w) {
+/// A row of a table held by column (SweepColumns): value k of the row at at[k * stride], at most `columns`.
+struct StridedRow {
+  double* at;
+  std::size_t stride, columns, n = 0;
+  void push_back(double v) {
+    if (n == columns) throw std::logic_error("sweep_columns: a row has more values than columns");
+    at[n++ * stride] = v;
+  }
+  std::size_t size() const { return n; }
+};
+
+/// The numeric values of row r appended to `row` (a std::vector<double> or a StridedRow), in the order of
+/// column_names.
+template <class Row>
+void row_values(const SweepOutput& out, bool rates, const std::vector<int>& others, std::size_t r, RowWork& w, Row& row) {
   const Mechanism<double>& m = out.scene.mechanism;
   const double in_scale = w.in_scale;
   const SweepRows& res = out.result;
-  std::vector<double>& row = w.row;
-  row.clear();
   row.push_back(input_column(out, r));
   const bool ok = res.has_pose(r);  // values also for singular poses
   const auto q = w.rows.q(r);
@@ -128,7 +140,8 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
   }
   if (out.analysis) {
     if (ok) analysis_values(m, analyse_pose(m, q, w.rows.qdot(r), *w.analysis_data), in_scale, row);
-    else row.resize(row.size() + analysis_column_count(m), kNaN);
+    else
+      for (std::size_t k = analysis_column_count(m); k > 0; --k) row.push_back(kNaN);
   }
   row.push_back(ok ? w.rows.report(r).residual : kNaN);
 }
@@ -147,7 +160,8 @@ constexpr std::size_t kRowsPerBlock = 1024;
 
 /// Row r of the table as a CSV line appended to `text`.
 void append_table_row(const CsvRows& t, std::size_t r, RowWork& w, std::string& text) {
-  row_values(t.out, t.rates, t.others, r, w);
+  w.row.clear();
+  row_values(t.out, t.rates, t.others, r, w, w.row);
   if (w.row.size() != t.columns) throw std::logic_error("write_sweep_csv: a row's values do not match its columns");
   const std::string status = to_string(t.out.result.status(r));
   append_csv_row(text, w.row.data(), w.row.size(), &status);
@@ -186,24 +200,25 @@ SweepColumns sweep_columns(const SweepOutput& out, bool rates) {
   SweepColumns t;
   std::vector<int> others;
   t.names = column_names(out, rates, others);
-  const std::size_t rows = out.result.size();
-  t.columns.assign(t.names.size(), std::vector<double>(rows));
+  const std::size_t rows = out.result.size(), columns = t.names.size();
+  t.values.reset(new double[columns * rows]);  // every value written below: no fill first
   t.status.resize(rows);
   RowWork w(out, others);
+  double* const values = t.values.get();
   for (std::size_t r = 0; r < rows; ++r) {
-    row_values(out, rates, others, r, w);
-    if (w.row.size() != t.names.size()) throw std::logic_error("sweep_columns: a row's values do not match its columns");
-    for (std::size_t c = 0; c < w.row.size(); ++c) t.columns[c][r] = w.row[c];
+    StridedRow row{values + r, rows, columns};
+    row_values(out, rates, others, r, w, row);
+    if (row.size() != columns) throw std::logic_error("sweep_columns: a row's values do not match its columns");
     t.status[r] = out.result.status(r);
   }
   return t;
 }
 
 SweepTable sweep_table(const SweepOutput& out, bool rates) {
-  SweepColumns c = sweep_columns(out, rates);
+  const SweepColumns c = sweep_columns(out, rates);
   SweepTable t;
-  t.names = std::move(c.names);
-  t.columns = std::move(c.columns);
+  t.names = c.names;
+  for (std::size_t k = 0; k < c.names.size(); ++k) t.columns.emplace_back(c.column(k), c.column(k) + c.rows());
   t.status.reserve(c.rows());
   for (SolveStatus s : c.status) t.status.push_back(to_string(s));
   return t;

@@ -26,11 +26,12 @@ std::vector<double> bounded_inputs(const Scene& scene, const Sweep& sweep, doubl
   if (!bad_bound.empty()) throw std::invalid_argument(option + ": " + bad_bound);
   const std::string bad_sweep = check_sweep(sweep);
   if (!bad_sweep.empty()) throw std::invalid_argument(bad_sweep);
-  const std::string range = "the sweep of " + sweep.input + " from " + format_number(sweep.from) + " to " + format_number(sweep.to);
+  // Formatted only for a message (a sweep is bounded for every run of a batch).
+  const auto range = [&] { return "the sweep of " + sweep.input + " from " + format_number(sweep.from) + " to " + format_number(sweep.to); };
   const double values = value_count(sweep);
   if (values > max_steps) {
     std::ostringstream os;
-    os << range << " by " << format_number(sweep.step) << " has " << std::scientific << std::setprecision(2) << values
+    os << range() << " by " << format_number(sweep.step) << " has " << std::scientific << std::setprecision(2) << values
        << " values, above the limit " << max_steps << " (" << option << "): each value is at least one continuation"
        << " sub-step; ask for a smaller range or a larger step (fewer values), or raise the limit with " << option;
     throw WorkLimitError(os.str());
@@ -39,7 +40,7 @@ std::vector<double> bounded_inputs(const Scene& scene, const Sweep& sweep, doubl
   const double estimate = estimate_substeps(scene.mechanism, scene.guess, sweep.driver, inputs);
   if (estimate > max_steps) {
     std::ostringstream os;
-    os << range << " needs an estimated " << std::scientific << std::setprecision(2) << estimate
+    os << range() << " needs an estimated " << std::scientific << std::setprecision(2) << estimate
        << " continuation sub-steps, above the limit " << max_steps << " (" << option << "); ask for a smaller range"
        << " (from/to), a larger step (fewer values), or raise the limit with " << option;
     throw WorkLimitError(os.str());

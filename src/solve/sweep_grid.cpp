@@ -137,14 +137,15 @@ std::string check_sweep(const Sweep& s) {
   if (!std::isfinite(s.from) || !std::isfinite(s.to) || !std::isfinite(s.step)) return "from, to and step must be finite numbers";
   if (s.step == 0) return "step must not be zero; expected a step with the sign of to - from";
   const double span = s.to - s.from;
-  const std::string from = io::format_number(s.from), to = io::format_number(s.to);
+  // The numbers are formatted only for a message (a sweep is checked for every run of a batch).
+  const auto from_to = [&] { return "from " + io::format_number(s.from) + " to " + io::format_number(s.to); };
   if (span != 0 && (span > 0) != (s.step > 0))
-    return "step " + io::format_number(s.step) + " has the wrong sign for a sweep from " + from + " to " + to +
+    return "step " + io::format_number(s.step) + " has the wrong sign for a sweep " + from_to() +
            "; expected a step with the sign of to - from";
   // The grid counts its values exactly (integers below 2^53); how many values a run may ask for is the
   // bounded-work rule's (io/work_bound.hpp: at most max_steps).
   if (span / s.step > 9e15)
-    return "the sweep from " + from + " to " + to + " by " + io::format_number(s.step) +
+    return "the sweep " + from_to() + " by " + io::format_number(s.step) +
            " has more than 9e15 values, more than a sweep can count; expected a larger step";
   return "";
 }

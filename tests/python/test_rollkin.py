@@ -290,6 +290,28 @@ def test_solve_many_equals_solving_each_alone(threads):
         assert_tables_equal(a, b)
 
 
+def test_columns_are_separate_arrays_that_outlive_their_table():
+    # The columns of a table share one block of memory (docs/python.md): each is its own C-contiguous float64
+    # array, writing one changes no other, and a column kept alone stays valid after the rest of its table
+    # is gone (the freed memory of other tables would be reused for the arrays made afterwards).
+    import gc
+    tables = rollkin.solve_many(variants()[:2], -50, 100, 1, threads=1)
+    table = tables[1]
+    names = [k for k in table if k != "status"]
+    copies = {k: table[k].copy() for k in names}
+    for k in names:
+        assert table[k].dtype == np.float64 and table[k].shape == (151,)
+        assert table[k].flags.c_contiguous and table[k].flags.writeable
+    table[names[0]][:] = -1.0
+    for k in names[1:]:
+        assert np.array_equal(table[k], copies[k], equal_nan=True)
+    kept = table[names[-1]]
+    del table, tables
+    gc.collect()
+    reused = [np.full(151 * len(names), 7.0) for _ in range(200)]
+    assert np.array_equal(kept, copies[names[-1]], equal_nan=True) and len(reused) == 200
+
+
 def sampled_cam_scene():
     """The DXF cam example with its cam replaced by samples of an offset circle (a spline contour)."""
     phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)

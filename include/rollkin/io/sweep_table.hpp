@@ -15,6 +15,7 @@
 #include "rollkin/solve/continuation.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,15 +61,17 @@ struct SweepTable {
   std::string csv() const;
 };
 
-/// The same numbers by column, and each row's status as its code: what the Python module hands to NumPy
-/// (each column's buffer becomes an array's memory as it is, without a copy; the statuses become an array
-/// of str once, not one string per row).
+/// The same numbers by column, and each row's status as its code: what the Python module hands to NumPy.
+/// The columns lie one after the other in one block (column c at pose r: values[c * rows() + r]), made in
+/// one allocation and written once (no zero fill): the block becomes the memory of every column's array as
+/// it is, without a copy; the statuses become an array of str once, not one string per row.
 struct SweepColumns {
-  std::vector<std::string> names;            // as SweepTable::names
-  std::vector<std::vector<double>> columns;  // as SweepTable::columns
-  std::vector<SolveStatus> status;           // per row
+  std::vector<std::string> names;    // as SweepTable::names
+  std::unique_ptr<double[]> values;  // names.size() columns of rows() values each; NaN where not solved
+  std::vector<SolveStatus> status;   // per row
 
   std::size_t rows() const { return status.size(); }
+  const double* column(std::size_t c) const { return values.get() + c * rows(); }
 };
 
 /// Columns: the input, every other pair variable, (rates) d(var)/d(input) per unknown, every link's
