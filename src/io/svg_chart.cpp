@@ -11,6 +11,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace rollkin::io {
 namespace {
@@ -120,22 +121,27 @@ SvgChart& SvgChart::set_y_label(std::string label) {
   y_label_ = std::move(label);
   return *this;
 }
-SvgChart& SvgChart::set_x_range(double lo, double hi) {
+namespace {
+
+/// A fixed axis range: finite lo <= hi, widened around the value when lo == hi (a constant), as the fitted
+/// ranges are.
+void fix_range(const char* setter, double lo, double hi, bool& fixed, double& to_lo, double& to_hi) {
   if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi))
-    throw std::invalid_argument("SvgChart::set_x_range: need finite lo <= hi");
-  sanitize(lo, hi);  // lo == hi (a constant): widened around the value, as the fitted ranges are
-  x_fixed_ = true;
-  x_lo_ = lo;
-  x_hi_ = hi;
+    throw std::invalid_argument(std::string("SvgChart::") + setter + ": need finite lo <= hi");
+  sanitize(lo, hi);
+  fixed = true;
+  to_lo = lo;
+  to_hi = hi;
+}
+
+}  // namespace
+
+SvgChart& SvgChart::set_x_range(double lo, double hi) {
+  fix_range("set_x_range", lo, hi, x_fixed_, x_lo_, x_hi_);
   return *this;
 }
 SvgChart& SvgChart::set_y_range(double lo, double hi) {
-  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi))
-    throw std::invalid_argument("SvgChart::set_y_range: need finite lo <= hi");
-  sanitize(lo, hi);  // lo == hi (a constant): widened around the value, as the fitted ranges are
-  y_fixed_ = true;
-  y_lo_ = lo;
-  y_hi_ = hi;
+  fix_range("set_y_range", lo, hi, y_fixed_, y_lo_, y_hi_);
   return *this;
 }
 SvgChart& SvgChart::set_tick_target(int x_intervals, int y_intervals) {
