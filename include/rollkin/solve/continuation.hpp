@@ -34,7 +34,6 @@
 // max_step, min_step are relative to the driver's variable scale (Mechanism::variable_scale).
 #pragma once
 
-#include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/position.hpp"
 #include "rollkin/solve/sweep_result.hpp"
 #include "rollkin/solve/sweep_summary.hpp"

@@ -6,6 +6,8 @@
 #pragma once
 
 #include "rollkin/solve/continuation.hpp"
+
+#include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/position.hxx"
 
 #include <algorithm>

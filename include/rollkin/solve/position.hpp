@@ -8,7 +8,6 @@
 // CannotAssemble. A converged pose whose error bound is not yet round-off takes one refining step.
 #pragma once
 
-#include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/solve_data.hpp"
 
 namespace rollkin {

@@ -5,6 +5,8 @@
 #pragma once
 
 #include "rollkin/solve/position.hpp"
+
+#include "rollkin/solve/contact_limits.hpp"
 #include "rollkin/solve/solve_data.hxx"
 
 #include <sstream>
