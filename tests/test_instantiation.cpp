@@ -1,6 +1,9 @@
 // Every class template of the library explicitly instantiated for both scalars, double and mpfr50 (as Sophus
 // does): an explicit instantiation compiles every member, so a member that does not compile for one scalar
-// fails this build instead of waiting for the first caller (docs/benchmark.md, "Build times"). The test case
+// fails this build instead of waiting for the first caller (docs/benchmark.md, "Build times"). The solver's
+// class templates with bodies in .hxx files (SolveData, the tracer, the contact limits) are instantiated
+// whole where they are compiled, src/solve/instantiate_double.cpp and instantiate_mpfr50.cpp, so that this
+// test does not compile the solver a third time. The test case
 // then runs the member that did not compile for MPFR (SolveData::factor_sparse, reached when a sparse
 // factorisation is asked for) in both scalars, against the closed form of a rolling disk.
 #define BOOST_TEST_MODULE instantiation
@@ -24,7 +27,7 @@
 #include "rollkin/profile/quadrature.hpp"
 #include "rollkin/profile/spline.hpp"
 #include "rollkin/scalar_mpfr.hpp"
-#include "rollkin/solve/continuation.hxx"  // the bodies of the class templates instantiated below
+#include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"
 #include "rollkin/synthesis.hpp"
 
@@ -62,15 +65,12 @@ namespace rollkin {
   template struct KinematicsData<S>;             \
   template struct NewtonSettings<S>;             \
   template class SmallLU<S>;                     \
-  template struct SolveData<S>;                  \
   template struct SolveReport<S>;                \
-  template class detail::ContactLimits<S>;       \
   template struct SweepPose<S>;                  \
   template struct detail::SweepColumns<S>;       \
   template class SweepResult<S>;                 \
   template struct SweepSummary<S>;               \
   template struct ContinuationSettings<S>;       \
-  template class detail::Tracer<S>;              \
   template struct ContactAnalysis<S>;            \
   template struct PoseAnalysis<S>;               \
   template struct AnalysisData<S>;               \

@@ -9,5 +9,9 @@ namespace rollkin {
 ROLLKIN_SOLVE_DATA_INSTANCES(template, double)
 ROLLKIN_POSITION_INSTANCES(template, double)
 ROLLKIN_CONTINUATION_INSTANCES(template, double)
+// Every member of the tracer and the contact limits, also those no entry point reaches yet
+// (tests/test_instantiation.cpp lists the other class templates).
+template class detail::Tracer<double>;
+template class detail::ContactLimits<double>;
 
 }  // namespace rollkin

@@ -8,6 +8,10 @@ namespace rollkin {
 ROLLKIN_SOLVE_DATA_INSTANCES(template, mpfr50)
 ROLLKIN_POSITION_INSTANCES(template, mpfr50)
 ROLLKIN_CONTINUATION_INSTANCES(template, mpfr50)
+// Every member of the tracer and the contact limits, also those no entry point reaches yet
+// (tests/test_instantiation.cpp lists the other class templates).
+template class detail::Tracer<mpfr50>;
+template class detail::ContactLimits<mpfr50>;
 ROLLKIN_ANALYSIS_INSTANCES(template, mpfr50)
 
 }  // namespace rollkin
