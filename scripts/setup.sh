@@ -86,10 +86,11 @@ if [[ "${ROLLKIN_SANITIZE:-0}" == 1 ]]; then sanitize=ON; fi
 # The compiler cache (ccache, installed above): a rebuild after a change, a second build directory or a fresh
 # clone in another folder compiles only what changed. CCACHE_BASEDIR makes the cached compile commands relative
 # to the repository, and CCACHE_NOHASHDIR leaves the build directory out of the key of the sanitizer build's
-# -g1 objects, so clones in different folders share the cache (docs/benchmark.md, "Build times").
+# -g1 objects, so clones in different folders share the cache; CCACHE_SLOPPINESS lets it cache the files that
+# include the precompiled header (src/precompiled.hpp; docs/benchmark.md, "Build times").
 launcher=()
 if command -v ccache >/dev/null 2>&1; then
-  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_BASEDIR=$root;CCACHE_NOHASHDIR=1;ccache")
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_BASEDIR=$root;CCACHE_NOHASHDIR=1;CCACHE_SLOPPINESS=pch_defines,time_macros;ccache")
   ccache --max-size=20G >/dev/null 2>&1 || true
 fi
 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DROLLKIN_SANITIZE="$sanitize" "${launcher[@]}"
