@@ -374,6 +374,27 @@ BOOST_AUTO_TEST_CASE(selection_by_handle_case_insensitive) {
   BOOST_TEST(contains(c.description, "handle " + lower));
 }
 
+// One wording for a selection in every message (the reader's description and errors, the scene reader's):
+// io::selection_text, for each way of selecting.
+BOOST_AUTO_TEST_CASE(every_selection_is_named_one_way) {
+  DxfSelection by_layer{"CAM", ""}, near_layer{"CAM", ""}, near_only, one{"", "2F"}, several;
+  near_layer.near = V(1, 2.5);
+  near_only.near = V(-3, 0);
+  several.handles = {"2F", "30"};
+  BOOST_TEST(rollkin::io::selection_text(by_layer) == "layer \"CAM\"");
+  BOOST_TEST(rollkin::io::selection_text(near_layer) == "layer \"CAM\", near (1, 2.5)");
+  BOOST_TEST(rollkin::io::selection_text(near_only) == "all layers, near (-3, 0)");
+  BOOST_TEST(rollkin::io::selection_text(one) == "handle 2F");
+  BOOST_TEST(rollkin::io::selection_text(several) == "handles 2F, 30");
+  const std::string handle = answer("splines_mm", "SPLINE_CIRCLE").fact("entities").substr(7);
+  DxfSelection listed;
+  listed.handles = {handle};
+  for (const DxfSelection& sel : {DxfSelection{"", handle}, listed}) {
+    const DxfContour c = rollkin::io::read_dxf_contour(kDir + "splines_mm.dxf", sel);
+    BOOST_TEST(contains(c.description, rollkin::io::selection_text(sel)), c.description);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(fixture_errors_name_the_entities) {
   for (const std::string layer : {"GAP", "BRANCH", "INSERT", "FITONLY"}) {
     const Answer a = answer("errors", layer);

@@ -42,18 +42,6 @@ void check_selection(const DxfSelection& sel, const std::string& file) {
     throw InputError(file, "", "the point \"near\" must be finite");
 }
 
-std::string selection_text(const DxfSelection& sel) {
-  if (!sel.handle.empty()) return "handle " + sel.handle;
-  if (!sel.handles.empty()) {
-    std::string s = "handles ";
-    for (std::size_t i = 0; i < sel.handles.size(); ++i) s += (i ? ", " : "") + sel.handles[i];
-    return s;
-  }
-  std::string s = sel.layer.empty() ? std::string("all layers") : "layer \"" + sel.layer + "\"";
-  if (sel.near) s += ", near " + point_text(*sel.near);
-  return s;
-}
-
 /// The entities of the ENTITIES section the selection considers.
 std::vector<const RawEntity*> considered(const std::vector<const RawEntity*>& all, const DxfSelection& sel, const std::string& file) {
   std::vector<const RawEntity*> chosen;
@@ -202,6 +190,18 @@ DxfContour contour_from(const std::string& text, const std::string& disk_path, c
 }
 
 }  // namespace
+
+std::string selection_text(const DxfSelection& sel) {
+  if (!sel.handle.empty()) return "handle " + sel.handle;
+  if (!sel.handles.empty()) {
+    std::string s = "handles ";
+    for (std::size_t i = 0; i < sel.handles.size(); ++i) s += (i ? ", " : "") + sel.handles[i];
+    return s;
+  }
+  std::string s = sel.layer.empty() ? std::string("all layers") : "layer \"" + sel.layer + "\"";
+  if (sel.near) s += ", near " + point_text(*sel.near);
+  return s;
+}
 
 DxfContour parse_dxf_contour(const std::string& dxf, const DxfSelection& selection, const std::string& file) {
   return contour_from(dxf, "", selection, file);

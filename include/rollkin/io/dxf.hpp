@@ -97,6 +97,10 @@ struct DxfSelection {
   std::optional<Vec2<double>> near;     // drawing units: the chain passing nearest to this point
 };
 
+/// How every message names a selection: "handle 1F", "handles 1F, 2A", "layer \"CAM\"", "layer \"CAM\",
+/// near (1, 2)" or "all layers, near (1, 2)".
+std::string selection_text(const DxfSelection& selection);
+
 /// A tangent discontinuity of the chained contour.
 struct DxfCorner {
   std::string entity;      // "LWPOLYLINE 2F" inside an entity, "LINE 2A / ARC 2B" at a join of two

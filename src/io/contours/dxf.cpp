@@ -44,19 +44,6 @@ DxfSelection dxf_selection(const json& c, const std::string& path, const JsonAcc
   return sel;
 }
 
-/// How messages name the selection.
-std::string selection_name(const DxfSelection& sel) {
-  if (!sel.handle.empty()) return "entity " + sel.handle;
-  if (!sel.handles.empty()) {
-    std::string s = "entities ";
-    for (std::size_t i = 0; i < sel.handles.size(); ++i) s += (i ? ", " : "") + sel.handles[i];
-    return s;
-  }
-  std::string s = sel.layer.empty() ? std::string("the drawing") : "layer \"" + sel.layer + "\"";
-  if (sel.near) s += " near (" + format_number(sel.near->x()) + ", " + format_number(sel.near->y()) + ")";
-  return s;
-}
-
 /// Every point multiplied by `factor` (an affine map: rational weights stay as they are).
 void scale_segments(std::vector<BezierSegment<double>>& segments, double factor) {
   for (BezierSegment<double>& s : segments)
@@ -77,7 +64,7 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
   } catch (const InputError& e) {
     js.fail(child(path, "file"), e.what());
   }
-  const std::string what = selection_name(sel);
+  const std::string what = selection_text(sel);
   const std::string drawing_unit = dxf.unit.empty() ? "drawing units" : dxf.unit;
   std::vector<Vec2<double>> joint_points;  // in drawing units, for messages
   for (const BezierSegment<double>& s : dxf.segments) joint_points.push_back(s.points.front());
@@ -95,7 +82,7 @@ ContourShape read_dxf_contour(const json& c, const std::string& path, const Cont
   try {
     bezier.emplace(dxf.segments, dxf.closed);
   } catch (const std::exception& e) {
-    js.fail(child(path, "file"), file + ": " + what + " is not a usable contour: " + e.what());
+    js.fail(child(path, "file"), file + ": the contour of " + what + " is not usable: " + e.what());
   }
   const bool reversed = dxf.closed ? ctx.material(c, path, signed_area(control_polygon(dxf.segments)) > 0, "inside")
                                    : ctx.material(c, path, std::nullopt, "left");
