@@ -8,10 +8,13 @@ Prints Markdown table rows, each the median (min-max) of --repeat readings of wa
   - Scene.solve of the paper example in 1-degree and in 0.01-degree steps, per pose, everything included
     (worker thread, sweep, table, NumPy arrays), and the same with analysis=True;
   - a design-study batch: --variants variants of the paper example (151 poses each) as variants per second,
-    through the bare C++ loop (assembly and sweep, no table: rollkin._sweep_seconds), solve_many on one
-    thread, solve_many on all cores (with the speed-up against one thread and its ratio to the number of
+    through the bare C++ loop (assembly and sweep, no table: rollkin._sweep_seconds), the C++ loop that also
+    makes the table solve() returns (io::sweep_columns, made and dropped: _sweep_seconds(table=True)),
+    solve_many on one thread, solve_many on all cores (with the speed-up against one thread and its ratio to the number of
     cores), and dask.distributed with 2 local worker processes (cluster start excluded); then the overhead
-    per variant of Python and of dask against the C++ loop;
+    per variant of Python and of dask against the C++ loop, and the CPU time per variant of solve_many over
+    that of each C++ loop (over the bare solve: what the table and Python add; over the loop with the
+    table: what Python adds);
   - a batch of few long sweeps: --long-variants variants of 15,001 poses each (0.01-degree steps) through
     solve_many on one thread and on all cores, and its speed-up (its work per variant is large, so the
     speed-up shows what the threads share rather than the calls' fixed costs).
@@ -96,13 +99,16 @@ def main():
                 readings(lambda: sc.solve(-50, 100, step, analysis=analysis), r), "us", 1e6 / poses)
 
     variants = [sc.modified({"links[1].contours[0].a": 0.45 + 0.1 * k / n}) for k in range(n)]
-    bare_cpu, one_cpu = [], []
+    bare_cpu, table_cpu, one_cpu = [], [], []
     bare = readings(lambda: bare_cpu.append(cpu_seconds(lambda: [rollkin._sweep_seconds(v, *SWEEP) for v in variants])), r)
+    table = readings(lambda: table_cpu.append(cpu_seconds(
+        lambda: [rollkin._sweep_seconds(v, *SWEEP, table=True) for v in variants])), r)
     one = readings(lambda: one_cpu.append(cpu_seconds(lambda: rollkin.solve_many(variants, *SWEEP, threads=1))), r)
     cpu0 = time.process_time()
     every = readings(lambda: rollkin.solve_many(variants, *SWEEP, threads=0), r)
     cpu_share = (time.process_time() - cpu0) / sum(every)
     rate_row("%d variants x 151 poses: C++ loop (assembly + sweep), one thread" % n, bare, n)
+    rate_row("... C++ loop with the table (assembly + sweep + io::sweep_columns), one thread", table, n)
     rate_row("... solve_many, threads=1", one, n)
     rate_row("... solve_many, threads=0 (%d cores)" % cores, every, n)
     speedup = statistics.median(one) / statistics.median(every)
@@ -112,8 +118,9 @@ def main():
     print("| overhead of Python per variant (solve_many threads=1 - C++ loop) | %.1f us (C++ loop %.1f us) |" %
           (per_variant(one) - per_variant(bare), per_variant(bare)))
     print("| CPU time per variant (process CPU time: the other jobs of a shared machine do not count): solve_many "
-          "threads=1 %.1f us, C++ loop %.1f us, ratio %.2f |" % (per_variant(one_cpu), per_variant(bare_cpu),
-                                                                per_variant(one_cpu) / per_variant(bare_cpu)))
+          "threads=1 %.1f us, C++ loop %.1f us, ratio %.2f; C++ loop with the table %.1f us, ratio %.2f |" %
+          (per_variant(one_cpu), per_variant(bare_cpu), per_variant(one_cpu) / per_variant(bare_cpu),
+           per_variant(table_cpu), per_variant(one_cpu) / per_variant(table_cpu)))
     if args.long_variants:
         m = args.long_variants
         long_variants = variants[:: max(1, n // m)][:m]

@@ -439,20 +439,26 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
         py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
         py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveManyDoc);
   m.def("_sweep_seconds",
-        [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step) {
-          // Benchmark hook (bench/python_bench.py): wall time of the bare C++ loop, assembly and sweep, with no
-          // table and no NumPy, for the overhead of Python and dask per variant against it.
-          const rollkin::output::SweepRun run = start_run(s, request(start, stop, step, false, false, rollkin::io::kDefaultMaxSteps));
+        [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+           bool table) {
+          // Benchmark hook (bench/python_bench.py): wall time of the C++ loop, assembly and sweep, with no NumPy:
+          // without the table (the bare solve) or with it (io::sweep_columns, the table solve() returns, made
+          // and dropped), for the overhead of Python and dask per variant against it.
+          rollkin::output::SweepRun run = start_run(s, request(start, stop, step, false, false, rollkin::io::kDefaultMaxSteps));
           py::gil_scoped_release nogil;
           const auto t0 = std::chrono::steady_clock::now();
           rollkin::SolveData<double> sd(run.mechanism());
           rollkin::VectorX<double> q;
           const auto assembly = run.try_assemble(sd, q);
-          [[maybe_unused]] const auto result = run.solve(sd, q, assembly);
+          const auto result = run.solve(sd, q, assembly);
+          if (table) {
+            [[maybe_unused]] const auto columns = rollkin::io::sweep_columns(run.output(result), false);
+          }
           const std::chrono::duration<double> t = std::chrono::steady_clock::now() - t0;
           return t.count();
         },
-        py::arg("scene"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none());
+        py::arg("scene"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
+        py::arg("table") = false);
 }
 
 }  // namespace rollkin::python
