@@ -92,7 +92,10 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
     if (cancel) return;
     job.assembly = job.run.try_assemble(sd, q);
     if (cancel) return;
-    job.result = job.run.solve(sd, q, job.assembly, &cancel);
+    // A table alone (solve, solve_many) reads the link poses the sweep keeps (ContinuationSettings::
+    // link_poses: equal to round-off to the tree's pairs evaluated again); the files of write() are the CLI's,
+    // byte for byte, so their table evaluates them as the CLI does.
+    job.result = job.run.solve(sd, q, job.assembly, &cancel, !job.keep_result);
     if (cancel) return;
     job.table = rollkin::io::sweep_columns(job.run.output(*job.result, r.analysis), r.rates);
     if (!job.keep_result) job.result.reset();
@@ -450,7 +453,7 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
           rollkin::SolveData<double> sd(run.mechanism());
           rollkin::VectorX<double> q;
           const auto assembly = run.try_assemble(sd, q);
-          const auto result = run.solve(sd, q, assembly);
+          const auto result = run.solve(sd, q, assembly, nullptr, table);
           if (table) {
             [[maybe_unused]] const auto columns = rollkin::io::sweep_columns(run.output(result), false);
           }

@@ -1,10 +1,18 @@
 // Constraint equations (eq. 6 loops, eq. 3 rolling rows): analytic Jacobian against central finite
 // differences of the residual, the acceleration bias against the directional derivative of J qdot, the
-// loops found from the graph, and link poses from the spanning tree.
+// loops found from the graph, and link poses from the spanning tree (link_poses_near against a fresh
+// evaluation, over the example scenes: every pair kind).
 #define BOOST_TEST_MODULE kinematics
 #include <boost/test/unit_test.hpp>
 
+#include "rollkin/io/scene.hpp"
 #include "rollkin/samples/mechanisms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 using namespace rollkin;
 using namespace rollkin::testing;
@@ -15,6 +23,37 @@ VectorX<double> residual_at(const Mechanism<double>& m, KinematicsData<double>& 
   evaluate_pairs<double>(m, q, nullptr, 2, d);
   compute_constraints(m, q, d);
   return d.residual;
+}
+
+/// The largest difference of two sets of link poses: of the rotations' cosines and sines, and of the
+/// translations over `length` (the mechanism's length scale).
+double pose_difference(const std::vector<SE2<double>>& a, const std::vector<SE2<double>>& b, double length) {
+  double worst = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max({worst, std::abs(a[i].cos_angle() - b[i].cos_angle()), std::abs(a[i].sin_angle() - b[i].sin_angle()),
+                      (a[i].translation() - b[i].translation()).cwiseAbs().maxCoeff() / length});
+  }
+  return worst;
+}
+
+/// The largest difference of the angles summed down the tree from the angles of the rotations (atan2), and
+/// whether every summed angle lies in [-pi, pi], next to a half turn on atan2's side.
+double angle_difference(const std::vector<double>& summed, const std::vector<SE2<double>>& b, bool& in_range) {
+  double worst = 0;
+  in_range = true;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    worst = std::max(worst, std::abs(std::remainder(summed[i] - b[i].angle(), 2 * pi<double>())));
+    in_range = in_range && summed[i] >= -pi<double>() && summed[i] <= pi<double>() &&
+               (std::abs(summed[i]) < 3 || std::signbit(summed[i]) == std::signbit(b[i].angle()));  // atan2's side
+  }
+  return worst;
+}
+
+bool bitwise_equal(const std::vector<SE2<double>>& a, const std::vector<SE2<double>>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].cos_angle() != b[i].cos_angle() || a[i].sin_angle() != b[i].sin_angle() || a[i].translation() != b[i].translation())
+      return false;
+  return true;
 }
 
 }  // namespace
@@ -112,4 +151,62 @@ BOOST_AUTO_TEST_CASE(rolling_rows_follow_a_changed_reference) {
       ++row;
     }
   }
+}
+
+// link_poses_near (a sweep's kept link poses) against link_poses_at (the tree's pairs evaluated at q), on every
+// example scene (revolute, prismatic, rolling and cam pairs; analytic, spline, Bezier and DXF contours), the
+// pairs evaluated at the scene's guess q0: at q0 itself the same numbers; at q0 moved by 1e-12 of each
+// variable's scale (a closing step's size) the first-order move agrees to round-off, where the transforms
+// of q0 unmoved are 1e-12 off; at 1e-6 (beyond the first order's reach) each pair is evaluated afresh. The
+// angles summed down the tree agree with the rotations' (atan2) to round-off, in [-pi, pi], also after
+// several turns of every variable.
+BOOST_AUTO_TEST_CASE(link_poses_near_an_evaluation_equal_a_fresh_evaluation_on_every_example) {
+  int scenes = 0;
+  for (const auto& file : std::filesystem::directory_iterator(std::string(ROLLKIN_SOURCE_DIR) + "/examples")) {
+    if (file.path().extension() != ".json") continue;
+    BOOST_TEST_CONTEXT(file.path().filename().string()) {
+      const io::Scene s = io::load_scene(file.path().string());
+      const Mechanism<double>& m = s.mechanism;
+      SolveData<double> sd(m);
+      const VectorX<double> q0 = s.guess;  // the tree's poses need no closed loop
+      evaluate_pairs<double>(m, q0, nullptr, 1, sd.kin);
+      const std::size_t links = m.links.size();
+      std::vector<SE2<double>> near(links), fresh(links);
+      std::vector<double> angle(links);
+      bool in_range = false;
+      const auto moved = [&](double by) {
+        VectorX<double> q = q0;
+        for (int i = 0; i < m.variable_count(); ++i) q(i) += (i % 2 ? -by : by) * m.variable_scale(i);
+        return q;
+      };
+      link_poses_near(m, sd.kin, q0, near.data(), angle.data());
+      link_poses_at(m, q0, fresh);
+      BOOST_TEST(bitwise_equal(near, fresh));
+      const double eps = std::numeric_limits<double>::epsilon();
+      BOOST_TEST(angle_difference(angle, fresh, in_range) <= 16 * eps);
+      BOOST_TEST(in_range);
+
+      const VectorX<double> q1 = moved(1e-12);
+      link_poses_near(m, sd.kin, q1, near.data());
+      link_poses_at(m, q1, fresh);
+      BOOST_TEST(pose_difference(near, fresh, m.length_scale) <= 16 * eps);
+      BOOST_TEST(pose_difference(link_poses(m, sd.kin), fresh, m.length_scale) > 1e-13);  // not moved: off
+
+      const VectorX<double> q2 = moved(1e-6);
+      link_poses_near(m, sd.kin, q2, near.data());
+      link_poses_at(m, q2, fresh);
+      BOOST_TEST(bitwise_equal(near, fresh));
+
+      VectorX<double> turned = q0;  // every angle variable 3.25 turns on
+      for (int i = 0; i < m.variable_count(); ++i)
+        if (m.variables[i].kind == ParamKind::Angle) turned(i) += 6.5 * pi<double>();
+      evaluate_pairs<double>(m, turned, nullptr, 1, sd.kin);
+      link_poses_near(m, sd.kin, turned, near.data(), angle.data());
+      link_poses_at(m, turned, fresh);
+      BOOST_TEST(angle_difference(angle, fresh, in_range) <= 64 * eps);
+      BOOST_TEST(in_range);
+      ++scenes;
+    }
+  }
+  BOOST_TEST(scenes >= 8);
 }

@@ -10,11 +10,15 @@
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene.hpp"
 #include "rollkin/io/sweep_file.hpp"
+#include "rollkin/io/sweep_table.hpp"
 #include "rollkin/output/sweep_run.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/position.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -229,4 +233,75 @@ BOOST_AUTO_TEST_CASE(an_assembly_that_fails_is_an_input_error_or_a_report) {
   const std::string message = testing::input_error_of([&] { run.assemble(sd, q); });
   BOOST_TEST(testing::contains(message, "far.json"));
   BOOST_TEST(testing::contains(message, "the mechanism cannot be assembled"));
+}
+
+// A run that keeps the link poses (solve(..., link_poses = true): what the Python module's tables read)
+// against one that does not (the table evaluates the tree's pairs at every pose), on the own sweep of every
+// example scene that assembles: the same poses, statuses and residuals; the kept link poses within round-off of a fresh
+// evaluation at each pose's values (link_poses_at); the tables the same columns, each value equal, the link
+// pose columns to round-off (the kept angles are summed down the tree, the evaluated ones atan2 of the rotation).
+BOOST_AUTO_TEST_CASE(kept_link_poses_give_the_table_of_a_fresh_evaluation_on_every_example) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  int scenes = 0;
+  for (const auto& file : fs::directory_iterator(kExamples)) {
+    if (file.path().extension() != ".json") continue;
+    BOOST_TEST_CONTEXT(file.path().filename().string()) {
+      const auto scene = scene_of(file.path().string());
+      const Mechanism<double>& m = scene->mechanism;
+      output::SweepRun run(scene, inputs_of(*scene), {}, {}, kNames);
+      SolveData<double> sd(m);
+      VectorX<double> q;
+      const SolveReport<double> assembly = run.try_assemble(sd, q);
+      if (!assembly.ok()) continue;  // (the osculating example: no pose to keep)
+      const SweepResult<double> kept = run.solve(sd, q, assembly, nullptr, true);
+      SolveData<double> sd2(m);
+      VectorX<double> q2;
+      const SolveReport<double> assembly2 = run.try_assemble(sd2, q2);
+      const SweepResult<double> plain = run.solve(sd2, q2, assembly2, nullptr, false);
+      BOOST_TEST_REQUIRE(kept.keeps_link_poses());
+      BOOST_TEST(!plain.keeps_link_poses());
+      std::vector<SE2<double>> fresh(m.links.size());
+      double worst = 0;
+      int with_values = 0;
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        BOOST_TEST_REQUIRE((kept.status(k) == plain.status(k)));
+        BOOST_TEST((kept.q(k) == plain.q(k)));
+        if (!kept.has_pose(k)) {
+          BOOST_TEST((kept.link_poses(k) == nullptr && kept.link_angles(k) == nullptr));
+          continue;
+        }
+        ++with_values;
+        link_poses_at(m, VectorX<double>(kept.q(k)), fresh);
+        const SE2<double>* got = kept.link_poses(k);
+        const double* angle = kept.link_angles(k);
+        for (std::size_t i = 0; i < fresh.size(); ++i)
+          worst = std::max({worst, std::abs(got[i].cos_angle() - fresh[i].cos_angle()),
+                            std::abs(got[i].sin_angle() - fresh[i].sin_angle()),
+                            (got[i].translation() - fresh[i].translation()).cwiseAbs().maxCoeff() / m.length_scale,
+                            std::abs(std::remainder(angle[i] - fresh[i].angle(), 2 * pi<double>()))});
+      }
+      BOOST_TEST(with_values > 0);
+      BOOST_TEST(worst <= 16 * eps);
+      const io::SweepColumns a = io::sweep_columns(run.output(kept), true), b = io::sweep_columns(run.output(plain), true);
+      BOOST_TEST_REQUIRE((a.names == b.names));
+      for (std::size_t c = 0; c < a.names.size(); ++c) {
+        const std::string& name = a.names[c];
+        bool pose_column = false;
+        for (const Link& l : m.links)
+          pose_column = pose_column || name == l.name + ".x" || name == l.name + ".y" || name == l.name + ".angle";
+        for (std::size_t r = 0; r < a.rows(); ++r) {
+          const double x = a.column(c)[r], y = b.column(c)[r];
+          if (std::isnan(y)) {
+            BOOST_TEST(std::isnan(x), name << " row " << r);
+          } else if (pose_column) {  // degrees for an angle; lengths in the scene's size
+            BOOST_TEST(std::abs(x - y) <= 64 * eps * std::max(m.length_scale, 180.0), name << " row " << r);
+          } else {
+            BOOST_TEST(x == y, name << " row " << r);
+          }
+        }
+      }
+      ++scenes;
+    }
+  }
+  BOOST_TEST(scenes >= 7);
 }

@@ -324,6 +324,84 @@ template <class S> void link_poses_at(const Mechanism<S>& m, const VectorX<S>& q
   }
 }
 
+namespace detail {
+
+/// exp(xi) of a twist xi = (vx, vy, omega) small enough for its first order: translation v, rotation by
+/// omega with cos omega = 1 - omega^2 / 2 (unit to O(omega^4)).
+template <class S> SE2<S> small_motion(const Twist<S>& xi) {
+  return SE2<S>::from_axis(S(1) - xi(2) * xi(2) / S(2), xi(2), Vec2<S>(xi(0), xi(1)));
+}
+
+/// The angle a of rotation r in [-pi, pi], as atan2 gives it: a brought there by whole turns (a itself when it
+/// lies within: no rounding), and a half turn on the side of r's sine (a sum of angles rounds either way there).
+template <class S> S angle_of(const S& a, const SE2<S>& r) {
+  using std::abs;
+  using std::round;
+  using std::signbit;
+  const S half = pi<S>(), turn = S(2) * pi<S>();
+  S w = a;
+  if (!(-half < w && w <= half)) {
+    w -= turn * round(w / turn);
+    if (w <= -half) w += turn;
+    if (w > half) w -= turn;
+  }
+  if (abs(w) > half - tolerance_once<S, 1, 2>()) w = signbit(r.sin_angle()) ? S(-abs(w)) : S(abs(w));
+  return w;
+}
+
+}  // namespace detail
+
+/// World pose of every link at q into pose[0 .. links), from the pair states in d evaluated at values next
+/// to q: a sweep's accepted pose takes one Newton step after its last evaluation (continuation.hxx,
+/// take_closing_step), so its link poses need no evaluation of their own. Each spanning-tree edge's
+/// transform E, evaluated at values q_e (PairState::evaluated_value), is moved to q to first order:
+///   E(q) = exp(xi) E(q_e),   xi = sum_j lambda_j (q_j - q_e,j)   (lambda_j = (dE/dq_j) E^-1, pair.hpp),
+/// with an error O(|q - q_e|^2): below round-off where every |q_j - q_e,j| is within eps^(5/8) of its
+/// variable's scale (the closing step is at most eps^(3/4), NewtonSettings::step_tolerance). An edge further
+/// from its evaluation, or never evaluated, is evaluated at q (pair_transform). Where q_e = q the numbers
+/// are link_poses_at's, to the last bit.
+/// With `angle`, also each link's angle in [-pi, pi] (atan2's range), summed down the tree rather than taken
+/// from the rotation (one atan2 per link): a revolute edge turns by angle(F_A) + q - angle(F_B), a prismatic one by
+/// angle(F_A) - angle(F_B), a contact edge by the angle of its transform.
+template <class S> void link_poses_near(const Mechanism<S>& m, const KinematicsData<S>& d, const VectorX<S>& q,
+                                        SE2<S>* pose, S* angle = nullptr) {
+  using std::abs;
+  const S& near = tolerance_once<S, 5, 8>();
+  pose[m.ground] = SE2<S>();
+  if (angle) angle[m.ground] = S(0);
+  for (int i : m.tree_order) {  // parents before children, the ground first
+    if (i == m.ground) continue;
+    const LoopEdge e = m.tree[i].edge;
+    const Pair<S>& pair = m.pairs[static_cast<std::size_t>(e.pair)];
+    const PairState<S>& st = d.pairs[static_cast<std::size_t>(e.pair)];
+    Twist<S> xi = Twist<S>::Zero();
+    bool moved = false, far = false;
+    for (int j = 0; j < pair.variable_count(); ++j) {
+      const int var = pair.first_variable + j;
+      const S dq = q(var) - st.evaluated_value(pair.kind, j);
+      if (!(abs(dq) <= near * m.variable_scale(var))) {
+        far = true;  // (NaN included: never evaluated)
+      } else if (dq != S(0)) {
+        xi += st.twist[static_cast<std::size_t>(j)] * dq;
+        moved = true;
+      }
+    }
+    const SE2<S> E = far     ? pair_transform(pair, m.contours, q.data() + pair.first_variable)
+                     : moved ? SE2<S>(detail::small_motion(xi) * st.transform)
+                             : st.transform;
+    const int parent = m.tree[i].parent;
+    pose[i] = pose[parent] * (e.forward ? E : E.inverse());
+    if (angle) {
+      const S turn = pair.kind == PairKind::Revolute    ? S(pair.frame_a.angle() + q(pair.first_variable) - pair.frame_b.angle())
+                     : pair.kind == PairKind::Prismatic ? S(pair.frame_a.angle() - pair.frame_b.angle())
+                                                        : E.angle();
+      angle[i] = angle[parent] + (e.forward ? turn : S(-turn));
+    }
+  }
+  if (angle)
+    for (std::size_t i = 0; i < m.links.size(); ++i) angle[i] = detail::angle_of(angle[i], pose[i]);
+}
+
 /// World pose of every link, from the spanning tree (pairs evaluated at q).
 template <class S> std::vector<SE2<S>> link_poses(const Mechanism<S>& m, const KinematicsData<S>& d) {
   std::vector<SE2<S>> pose(m.links.size());

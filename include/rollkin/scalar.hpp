@@ -94,4 +94,11 @@ template <class S> inline S tolerance(const S& power) {
   return pow(epsilon<S>(), power);
 }
 
+/// eps^(num/den), computed once per scalar type and power: for a tolerance used per pose, where a pow per
+/// call costs as much as the work it bounds.
+template <class S, int num, int den> const S& tolerance_once() {
+  static const S t = tolerance<S>(S(num) / S(den));
+  return t;
+}
+
 }  // namespace rollkin

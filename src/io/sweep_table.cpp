@@ -86,7 +86,7 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
 /// links' poses, the analysis' workspace (with the analysis columns), the row's values.
 struct RowWork {
   RowWork(const SweepOutput& out, const std::vector<int>& others)
-      : rows(out.result), link_pose(out.scene.mechanism.links.size()) {
+      : rows(out.result), link_pose(out.scene.mechanism.links.size()), link_angle(link_pose.size()) {
     const Mechanism<double>& m = out.scene.mechanism;
     in_scale = output_scale(m, out.sweep.variable);
     for (int i : others) other_scale.push_back(output_scale(m, i));
@@ -97,7 +97,8 @@ struct RowWork {
   double in_scale;
   std::vector<double> other_scale, unknown_scale;  // output_scale of each of `others`, of each unknown
   VectorX<double> q;
-  std::vector<SE2<double>> link_pose;
+  std::vector<SE2<double>> link_pose;  // of a row whose result keeps none
+  std::vector<double> link_angle;
   std::optional<AnalysisData<double>> analysis_data;
   std::vector<double> row;  // a row of the CSV
 };
@@ -129,21 +130,28 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
     for (std::size_t k = 0; k < m.unknowns.size(); ++k)
       row.push_back(ok ? qdot(m.unknowns[k]) * w.unknown_scale[k] / in_scale : kNaN);
   }
-  if (ok) {
+  // The link poses the sweep kept (ContinuationSettings::link_poses), else the spanning tree's pairs alone
+  // evaluated at q, positions only.
+  const SE2<double>* pose = ok ? w.rows.link_poses(r) : nullptr;
+  const double* angle = ok ? w.rows.link_angles(r) : nullptr;
+  if (ok && pose == nullptr) {
     w.q = q;
-    link_poses_at(m, w.q, w.link_pose);  // the spanning tree's pairs alone, positions only
+    link_poses_at(m, w.q, w.link_pose);
+    for (std::size_t i = 0; i < w.link_pose.size(); ++i) w.link_angle[i] = w.link_pose[i].angle();
+    pose = w.link_pose.data();
+    angle = w.link_angle.data();
   }
-  for (const SE2<double>& lp : w.link_pose) {
-    row.push_back(ok ? lp.translation().x() : kNaN);
-    row.push_back(ok ? lp.translation().y() : kNaN);
-    row.push_back(ok ? from_radians(lp.angle(), kOutputAngle) : kNaN);
+  for (std::size_t i = 0; i < w.link_pose.size(); ++i) {
+    row.push_back(ok ? pose[i].translation().x() : kNaN);
+    row.push_back(ok ? pose[i].translation().y() : kNaN);
+    row.push_back(ok ? from_radians(angle[i], kOutputAngle) : kNaN);
   }
   if (out.analysis) {
     if (ok) analysis_values(m, analyse_pose(m, q, w.rows.qdot(r), *w.analysis_data), in_scale, row);
     else
       for (std::size_t k = analysis_column_count(m); k > 0; --k) row.push_back(kNaN);
   }
-  row.push_back(ok ? w.rows.report(r).residual : kNaN);
+  row.push_back(ok ? w.rows.residual(r) : kNaN);
 }
 
 /// What the rows of one CSV table share.

@@ -52,9 +52,10 @@ SolveReport<double> SweepRun::assemble(SolveData<double>& sd, VectorX<double>& q
 }
 
 SweepResult<double> SweepRun::solve(SolveData<double>& sd, const VectorX<double>& q, const SolveReport<double>& assembly,
-                                    const std::atomic<bool>* cancel) const {
+                                    const std::atomic<bool>* cancel, bool link_poses) const {
   ContinuationSettings<double> cfg;
   cfg.cancel = cancel;
+  cfg.link_poses = link_poses;
   return rollkin::sweep(scene_->mechanism, sd, q, assembly, sweep_.driver, inputs_, cfg);
 }
 

@@ -43,7 +43,11 @@ class RowReader {
 
   PoseColumn<double> q(std::size_t r) { return block(r).q(r - first_); }
   PoseColumn<double> qdot(std::size_t r) { return block(r).qdot(r - first_); }
-  SolveReport<double> report(std::size_t r) { return block(r).report(r - first_); }
+  double residual(std::size_t r) { return block(r).residual(r - first_); }
+  /// Row r's link poses and angles when the result keeps them (in memory, ContinuationSettings::link_poses),
+  /// else nullptr.
+  const SE2<double>* link_poses(std::size_t r) { return block(r).link_poses(r - first_); }
+  const double* link_angles(std::size_t r) { return block(r).link_angles(r - first_); }
 
  private:
   const SweepResult<double>& block(std::size_t r) {

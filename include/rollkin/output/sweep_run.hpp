@@ -107,10 +107,11 @@ class SweepRun {
   /// The same, the report returned whatever it says (a batch reports a scene that cannot be assembled as a
   /// table of NaN and goes on with the others).
   SolveReport<double> try_assemble(SolveData<double>& sd, VectorX<double>& q) const;
-  /// The sweep from the assembly: every pose's values in memory. `cancel`, when given, is polled between
-  /// poses (ContinuationSettings::cancel).
+  /// The sweep from the assembly: every pose's values in memory, with every link's pose when `link_poses`
+  /// (for a table: ContinuationSettings::link_poses). `cancel`, when given, is polled between poses
+  /// (ContinuationSettings::cancel).
   SweepResult<double> solve(SolveData<double>& sd, const VectorX<double>& q, const SolveReport<double>& assembly,
-                            const std::atomic<bool>* cancel = nullptr) const;
+                            const std::atomic<bool>* cancel = nullptr, bool link_poses = false) const;
   /// The same, the poses kept in `file` (made with this run's inputs) rather than in memory: the files'
   /// memory stays that of a summary whatever the number of poses (io/sweep_file.hpp).
   void solve_into(SolveData<double>& sd, const VectorX<double>& q, const SolveReport<double>& assembly,

@@ -83,6 +83,11 @@ template <class S> struct PairState {
   // The variable a revolute or prismatic pair was last evaluated at (NaN: never). Its state depends on that
   // value only, and a driver keeps its value over a pose's Newton iterations.
   S joint_value = std::numeric_limits<S>::quiet_NaN();
+  // The contact parameters a cam or rolling pair was last evaluated at (NaN: never).
+  std::array<S, 2> contact_value{std::numeric_limits<S>::quiet_NaN(), std::numeric_limits<S>::quiet_NaN()};
+
+  /// The value of the pair's variable j (0, or 1 for a contact pair) this state was evaluated at.
+  const S& evaluated_value(PairKind kind, int j) const { return is_contact(kind) ? contact_value[j] : joint_value; }
 };
 
 /// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames (flagged by finalize()) are
@@ -127,6 +132,7 @@ template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Con
   }
   // Contours carry their placement: T_A, T_B are already in the link frames (F_A = F_B = I).
   const int geo = order >= 2 ? order : 2;  // curvature is needed for the twists themselves
+  st.contact_value = {q[0], q[1]};
   st.contact[0] = contour_point(contours[pair.contour_a].jet(q[0], geo), geo);
   st.contact[1] = contour_point(contours[pair.contour_b].jet(q[1], geo), geo);
   const ContourPoint<S>& a = st.contact[0];

@@ -65,6 +65,10 @@ template <class S> struct ContinuationSettings {
   /// Cancellation (e.g. a Ctrl-C in the Python module): when set and true, sweep() stops before the next
   /// requested pose; the poses not reached keep the status NotReached.
   const std::atomic<bool>* cancel = nullptr;
+  /// sweep() keeps every solved pose's link poses (SweepResult::link_poses), from the pair states of the
+  /// pose's last evaluation (link_poses_near): what a table of link poses reads instead of evaluating the
+  /// spanning tree's pairs again at every pose.
+  bool link_poses = false;
 };
 
 /// Where sweep_into() reports the continuation, for a caller that keeps the poses its own way (e.g. in a

@@ -239,7 +239,7 @@ template <class S> class Tracer {
   /// singular.
   bool singular_trial(const SolveReport<S>& rep) const {
     if (rep.status == SolveStatus::Underdetermined) return start_.ok();
-    return rep.ok() && sd_.error_bound(rep.residual, rep.equations) > tolerance<S>(S(2) / S(3));
+    return rep.ok() && sd_.error_bound(rep.residual, rep.equations) > tolerance_once<S, 2, 3>();
   }
 
   /// From the current (regular) pose, steps over the singular input t to a regular pose beyond it, at least
@@ -528,7 +528,7 @@ std::size_t interpolate_stride(Tracer<S>& tracer, const std::vector<S>& inputs, 
   }
   // Where the condition times Newton's tolerance exceeds eps^(2/3), a converged prediction takes one
   // refining step (detail::worth_refining) and reports one iteration although it met the tolerance.
-  const bool refined = rep.condition * tracer.newton_tolerance() > tolerance<S>(S(2) / S(3));
+  const bool refined = rep.condition * tracer.newton_tolerance() > tolerance_once<S, 2, 3>();
   const bool prediction_met = rep.iterations == 0 || (rep.iterations == 1 && refined);
   tracer.update_span(largest, prediction_met, max(rep.residual, near_ends));
   out.set_pose(side[end], tracer.q(), tracer.v(), rep);
@@ -580,6 +580,9 @@ void trace_sweep(const Mechanism<S>& m, SolveData<S>& sd, const VectorX<S>& q0, 
         break;
       }
       out.set_pose(at, tracer.q(), tracer.v(), rep);
+      if constexpr (Out::holds_values) {
+        if (out.keeps_link_poses()) out.set_link_poses(at, m, sd.kin, tracer.q());
+      }
     }
   }
 }
@@ -597,7 +600,7 @@ template <class S> SweepResult<S> sweep(const Mechanism<S>& m, SolveData<S>& sd,
                                         const ContinuationSettings<S>& cfg) {
   // Sized once for every requested input: storing a pose below allocates nothing.
   SweepResult<S> out(assembly, inputs, static_cast<Eigen::Index>(m.variable_count()),
-                     assembly.ok() ? SolveStatus::NotReached : assembly.status);
+                     assembly.ok() ? SolveStatus::NotReached : assembly.status, cfg.link_poses ? m.links.size() : 0);
   if (assembly.ok()) detail::trace_sweep(m, sd, q0, driver, inputs, cfg, out);
   out.zero_columns_without_values();
   return out;

@@ -27,7 +27,7 @@ namespace detail {
 /// were accurate, and one more step brings the residual to round-off. Not at a singular pose (condition
 /// x eps above eps^(2/3)), where no step can.
 template <class S> bool worth_refining(const SolveData<S>& sd, const SolveReport<S>& rep) {
-  const S limit = tolerance<S>(S(2) / S(3));
+  const S& limit = tolerance_once<S, 2, 3>();
   return rep.status == SolveStatus::Converged && sd.error_bound(rep.residual, rep.equations) > limit &&
          sd.condition * epsilon<S>() <= limit;
 }
@@ -91,7 +91,7 @@ template <class S> SolveReport<S> solve_position(const Mechanism<S>& m, VectorX<
     const bool settled = last_step <= cfg.step_tolerance && rep.residual <= cfg.consistency_tolerance;
     // A least-squares residual that no longer halves in two iterations while the steps are small has reached
     // its minimum: consistent if within the tolerance, otherwise the constraints disagree.
-    stagnant = it >= 2 && rep.residual > residual_before / S(2) && last_step <= tolerance<S>(S(1) / S(3));
+    stagnant = it >= 2 && rep.residual > residual_before / S(2) && last_step <= tolerance_once<S, 1, 3>();
     if (rep.residual <= cfg.residual_tolerance || settled || (stagnant && rep.residual <= cfg.consistency_tolerance)) {
       rep.status = rep.rank < rep.unknowns ? SolveStatus::Underdetermined : SolveStatus::Converged;
       if (it == cfg.max_iterations || !detail::worth_refining(sd, rep)) return rep;

@@ -50,6 +50,9 @@ template <class S> struct SweepColumns {
   MatrixX<S> q_, qdot_;                // variables x poses
   std::vector<Record> records_;
   std::vector<SolveReport<S>> full_;   // reports that do not fit a Record
+  std::size_t links_ = 0;              // link poses kept per pose (0: none kept)
+  std::vector<SE2<S>> link_poses_;     // links_ per pose, pose by pose
+  std::vector<S> link_angles_;         // the same links' angles in [-pi, pi]
 };
 
 }  // namespace detail
@@ -111,8 +114,10 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
   }
 
   /// Room for `inputs.size()` poses of `variables` variables, each with status `status` and no values yet
-  /// (their columns are unwritten until set_pose() or zero_columns_without_values()).
-  SweepResult(const SolveReport<S>& assembly, const std::vector<S>& inputs, Eigen::Index variables, SolveStatus status) {
+  /// (their columns are unwritten until set_pose() or zero_columns_without_values()), and for the world
+  /// poses of `links` links per pose (0: none kept; ContinuationSettings::link_poses).
+  SweepResult(const SolveReport<S>& assembly, const std::vector<S>& inputs, Eigen::Index variables, SolveStatus status,
+              std::size_t links = 0) {
     const auto n = static_cast<Eigen::Index>(inputs.size());
     this->assembly = assembly;
     this->inputs_ = inputs;
@@ -127,6 +132,9 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     this->records_.reserve(inputs.size());
     advise_huge_pages(this->records_.data(), inputs.size() * sizeof(Record));
     this->records_.assign(inputs.size(), blank);
+    this->links_ = links;
+    this->link_poses_.resize(links * inputs.size());
+    this->link_angles_.resize(links * inputs.size());
   }
 
   std::size_t size() const { return this->records_.size(); }
@@ -156,7 +164,29 @@ template <class S> class SweepResult : public detail::SweepColumns<S> {
     return rep;
   }
 
+  /// Pose k's residual (its report's, without copying the report).
+  const S& residual(std::size_t k) const {
+    const Record& r = this->records_[k];
+    return r.full >= 0 ? this->full_[static_cast<std::size_t>(r.full)].residual : r.residual;
+  }
   SweepPose<S> pose(std::size_t k) const { return SweepPose<S>{input(k), q(k), qdot(k), report(k)}; }
+
+  /// Whether the result keeps every pose's link poses (ContinuationSettings::link_poses).
+  bool keeps_link_poses() const { return this->links_ > 0; }
+  /// The world pose of every link at pose k (Mechanism::links order) when kept and the pose has values,
+  /// else nullptr.
+  const SE2<S>* link_poses(std::size_t k) const {
+    return keeps_link_poses() && has_pose(k) ? this->link_poses_.data() + k * this->links_ : nullptr;
+  }
+  /// Their angles in [-pi, pi] (link_poses_near), else nullptr.
+  const S* link_angles(std::size_t k) const {
+    return keeps_link_poses() && has_pose(k) ? this->link_angles_.data() + k * this->links_ : nullptr;
+  }
+  /// Stores pose k's link poses and angles at its values q from the pair states in d (link_poses_near: no
+  /// pair evaluated again where d was evaluated within a closing step of q).
+  void set_link_poses(std::size_t k, const Mechanism<S>& m, const KinematicsData<S>& d, const VectorX<S>& q) {
+    link_poses_near(m, d, q, this->link_poses_.data() + k * this->links_, this->link_angles_.data() + k * this->links_);
+  }
 
   /// Stores pose k: its values, rates and report (no allocation unless the report carries a detail).
   template <class Q, class V> void set_pose(std::size_t k, const Q& q, const V& qdot, const SolveReport<S>& rep) {
