@@ -24,7 +24,7 @@ void check_signals_every_block(std::size_t i) {
 json float_array_json(py::handle v, const std::string& path, const std::string& file) {
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
   if (!a || a.ndim() < 1 || a.ndim() > 2)
-    throw InputError(file, path, "a float array of " + std::to_string(a ? a.ndim() : 0) +
+    throw io::InputError(file, path, "a float array of " + std::to_string(a ? a.ndim() : 0) +
                                      " dimensions; expected a vector or an (n, k) array");
   const py::ssize_t rows = a.shape(0), cols = a.ndim() == 2 ? a.shape(1) : 1;
   const double* data = a.data();
@@ -33,7 +33,7 @@ json float_array_json(py::handle v, const std::string& path, const std::string& 
     if (std::isfinite(d)) return d;
     const std::string at = a.ndim() == 2 ? rollkin::io::index(rollkin::io::index(path, static_cast<std::size_t>(i)), static_cast<std::size_t>(j))
                                             : rollkin::io::index(path, static_cast<std::size_t>(i));
-    throw InputError(file, at, "the number " + std::string(py::str(py::float_(d))) + " is not finite; expected a finite number");
+    throw io::InputError(file, at, "the number " + std::string(py::str(py::float_(d))) + " is not finite; expected a finite number");
   };
   json out = json::array();
   out.get_ref<json::array_t&>().reserve(static_cast<std::size_t>(rows));
@@ -57,13 +57,13 @@ std::string json_text(py::handle v, const std::string& path, const std::string& 
   const char* utf8 = PyUnicode_AsUTF8AndSize(v.ptr(), &size);
   if (utf8) return std::string(utf8, static_cast<std::size_t>(size));
   PyErr_Clear();
-  throw InputError(file, path, "the string " + std::string(py::repr(v)) +
+  throw io::InputError(file, path, "the string " + std::string(py::repr(v)) +
                                    " holds a lone surrogate, which no JSON text can; expected valid Unicode");
 }
 
 json to_json(py::handle v, const std::string& path, const std::string& file, std::size_t depth) {
   if (depth > rollkin::io::kMaxJsonDepth)
-    throw InputError(file, path, "nested deeper than " + std::to_string(rollkin::io::kMaxJsonDepth) + " levels");
+    throw io::InputError(file, path, "nested deeper than " + std::to_string(rollkin::io::kMaxJsonDepth) + " levels");
   if (v.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
   if (py::isinstance<py::int_>(v)) {
@@ -74,7 +74,7 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
   }
   if (py::isinstance<py::float_>(v)) {
     const double d = v.cast<double>();
-    if (!std::isfinite(d)) throw InputError(file, path, "the number " + std::string(py::str(v)) + " is not finite; expected a finite number");
+    if (!std::isfinite(d)) throw io::InputError(file, path, "the number " + std::string(py::str(v)) + " is not finite; expected a finite number");
     return d;
   }
   if (py::isinstance<py::str>(v)) return json_text(v, path, file);
@@ -82,7 +82,7 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
     json out = json::object();
     for (auto item : py::reinterpret_borrow<py::dict>(v)) {
       if (!py::isinstance<py::str>(item.first))
-        throw InputError(file, path, "a key " + std::string(py::repr(item.first)) + " that is not a string; JSON keys are strings");
+        throw io::InputError(file, path, "a key " + std::string(py::repr(item.first)) + " that is not a string; JSON keys are strings");
       const std::string key = json_text(item.first, path, file);
       out[key] = to_json(item.second, rollkin::io::child(path, key), file, depth + 1);
     }
@@ -99,7 +99,7 @@ json to_json(py::handle v, const std::string& path, const std::string& file, std
   }
   if (py::isinstance<py::array>(v) && py::array::ensure(v).dtype().kind() == 'f') return float_array_json(v, path, file);
   if (py::hasattr(v, "tolist") && py::hasattr(v, "dtype")) return to_json(v.attr("tolist")(), path, file, depth);
-  throw InputError(file, path, "a Python " + std::string(py::str(v.get_type().attr("__name__"))) +
+  throw io::InputError(file, path, "a Python " + std::string(py::str(v.get_type().attr("__name__"))) +
                                    " cannot be a scene value; expected a dict, list, str, number, bool or None");
 }
 

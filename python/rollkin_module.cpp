@@ -12,7 +12,7 @@
 
 #include <exception>
 
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::python::PyScene;
 
 namespace {

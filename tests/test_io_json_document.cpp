@@ -7,7 +7,7 @@
 
 #include <string>
 
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::io::kMaxJsonDepth;
 using rollkin::io::parse_json_document;
 using json = nlohmann::ordered_json;

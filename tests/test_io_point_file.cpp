@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::io::parse_point_text;
 using rollkin::io::read_point_file;
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::deg_to_rad;
 using rollkin::io::Scene;
 using rollkin::io::load_scene;

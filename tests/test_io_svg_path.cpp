@@ -12,7 +12,7 @@
 #include <fstream>
 
 using rollkin::BezierPath;
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::io::parse_svg_path_data;
 using rollkin::io::SvgPathOptions;
 using rollkin::io::SvgSubpath;

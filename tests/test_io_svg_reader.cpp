@@ -18,7 +18,7 @@
 
 using rollkin::BezierPath;
 using rollkin::BezierSegment;
-using rollkin::InputError;
+using rollkin::io::InputError;
 using rollkin::io::read_svg_shape;
 using rollkin::io::read_svg_shape_from_text;
 using rollkin::io::SvgReadOptions;

@@ -46,7 +46,7 @@ inline bool no_temporaries_in(const std::filesystem::path& dir) {
 template <class F> std::string input_error_of(F&& f) {
   try {
     f();
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     return e.what();
   }
   return "";

@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(a_bad_follower_contour_is_reported_at_its_path) {
     spec_from_text(std::string(R"({"base_radius": 40, "follower": {"motion": "translating"},
                                    "contact": {"contour": {"type": "circel", "radius": 10}}, )") + kLaw + "}");
     BOOST_FAIL("no error");
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     BOOST_TEST(e.location() == "contact.contour.type");
   }
 }

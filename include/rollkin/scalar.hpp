@@ -80,6 +80,10 @@ inline void sin_cos(const double& x, double& s, double& c) {
   }
 }
 
+/// Degrees to radians and back.
+template <class S> inline S deg_to_rad(const S& deg) { return deg * pi<S>() / S(180); }
+template <class S> inline S rad_to_deg(const S& rad) { return rad * S(180) / pi<S>(); }
+
 /// Wraps an angle to (-pi, pi].
 template <class S> inline S wrap_angle(const S& a) {
   using std::atan2;

@@ -199,7 +199,7 @@ int error_status(std::ostream& err) {
     err << "rollkin: out of memory while " << g_doing
         << "; nothing was written (a smaller sweep, fewer samples or more memory may help)\n";
     return 3;
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     err << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -114,10 +114,10 @@ class CamSpecReader {
     const std::string prefix = "links[1].contours[0]";
     try {
       spec.follower_shape = std::make_shared<const io::Scene>(io::build_scene(scene, js_.file(), dir_));
-    } catch (const InputError& e) {
+    } catch (const io::InputError& e) {
       std::string location = e.location();
       if (location.compare(0, prefix.size(), prefix) == 0) location = "contact.contour" + location.substr(prefix.size());
-      throw InputError(e.file(), location, e.message());
+      throw io::InputError(e.file(), location, e.message());
     }
     for (const std::string& f : spec.follower_shape->files_read) spec.files_read.push_back(f);
     spec.follower_contour = dict;
@@ -234,8 +234,8 @@ class CamSpecReader {
     io::PointSamples rows;
     try {
       rows = io::read_point_samples(path.string(), 4);
-    } catch (const InputError& e) {  // the point file's words are about x y: say what the columns are here
-      throw InputError(e.file(), e.location(), e.message() + " (a law file is read as a point file: two columns, the cam angle then "
+    } catch (const io::InputError& e) {  // the point file's words are about x y: say what the columns are here
+      throw io::InputError(e.file(), e.location(), e.message() + " (a law file is read as a point file: two columns, the cam angle then "
                                                              "the follower's displacement; no header line, or one naming x y)");
     }
     std::vector<double> theta, s;
@@ -246,7 +246,7 @@ class CamSpecReader {
     try {
       spec.law = MotionLaw<double>::from_table(theta, s);
     } catch (const std::invalid_argument& e) {
-      throw InputError(path.string(), "", e.what());
+      throw io::InputError(path.string(), "", e.what());
     }
   }
 

@@ -51,8 +51,8 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     io::PointSamples rows;
     try {
       rows = io::read_point_samples(file.string(), 5);
-    } catch (const InputError& e) {  // the point file's words are about x y: say what the columns are here
-      throw InputError(e.file(), e.location(), e.message() + " (a transmission table is read as a point file: two columns, phi1 "
+    } catch (const io::InputError& e) {  // the point file's words are about x y: say what the columns are here
+      throw io::InputError(e.file(), e.location(), e.message() + " (a transmission table is read as a point file: two columns, phi1 "
                                                              "then phi2; no header line, or one naming x y)");
     }
     std::vector<double> p, g;
@@ -62,7 +62,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     }
     const double turn = 2 * pi<double>();
     if (std::abs(p.back() - p.front() - turn) > 1e-12 * turn)
-      throw InputError(file.string(), "line " + std::to_string(rows.lines.back()),
+      throw io::InputError(file.string(), "line " + std::to_string(rows.lines.back()),
                        "the table must cover one turn of phi1, its last row at the first phi1 + " +
                            io::format_number(io::from_radians(turn, spec.angle_unit)));
     spec.closure_error = g.back() - g.front();  // f(p + 2 pi) - f(p) - 2 pi
@@ -70,7 +70,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     try {
       spec.table_excess = MotionLaw<double>::from_table(p, g);
     } catch (const std::invalid_argument& e) {
-      throw InputError(file.string(), "", e.what());
+      throw io::InputError(file.string(), "", e.what());
     }
   } else {
     const std::string kind = js.string(js.require(t, "transmission", "kind", "\"elliptical\" or \"sinusoidal\""),

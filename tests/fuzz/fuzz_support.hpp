@@ -20,7 +20,7 @@ namespace rollkin::fuzz {
 template <class F> void expect_documented_outcome(F&& read) {
   try {
     read();
-  } catch (const InputError&) {
+  } catch (const io::InputError&) {
   } catch (const std::bad_alloc&) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "finding: undocumented exception %s: %s\n", typeid(e).name(), e.what());

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace rollkin {
+namespace rollkin::io {
 
 /// A byte shown as an escape: "\n", "\r", "\t" or "\xNN" (for control characters and stray bytes).
 inline std::string escaped_byte(unsigned char c) {
@@ -71,4 +71,4 @@ class InputError : public std::runtime_error {
   std::string file_, location_, message_;
 };
 
-}  // namespace rollkin
+}  // namespace rollkin::io

@@ -10,13 +10,6 @@
 #include <string>
 #include <vector>
 
-namespace rollkin {
-
-template <class S> inline S deg_to_rad(const S& deg) { return deg * pi<S>() / S(180); }
-template <class S> inline S rad_to_deg(const S& rad) { return rad * S(180) / pi<S>(); }
-
-}  // namespace rollkin
-
 namespace rollkin::io {
 
 enum class AngleUnit { Degree, Radian };
