@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE kinematics
 #include <boost/test/unit_test.hpp>
 
+#include "test_support.hpp"
+
 #include "rollkin/io/scene.hpp"
 #include "rollkin/samples/mechanisms.hpp"
 
@@ -25,15 +27,8 @@ VectorX<double> residual_at(const Mechanism<double>& m, KinematicsData<double>& 
   return d.residual;
 }
 
-/// The largest difference of two sets of link poses: of the rotations' cosines and sines, and of the
-/// translations over `length` (the mechanism's length scale).
 double pose_difference(const std::vector<SE2<double>>& a, const std::vector<SE2<double>>& b, double length) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    worst = std::max({worst, std::abs(a[i].cos_angle() - b[i].cos_angle()), std::abs(a[i].sin_angle() - b[i].sin_angle()),
-                      (a[i].translation() - b[i].translation()).cwiseAbs().maxCoeff() / length});
-  }
-  return worst;
+  return link_pose_difference(a.data(), b.data(), a.size(), length);
 }
 
 /// The largest difference of the angles summed down the tree from the angles of the rotations (atan2), and
@@ -42,7 +37,7 @@ double angle_difference(const std::vector<double>& summed, const std::vector<SE2
   double worst = 0;
   in_range = true;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    worst = std::max(worst, std::abs(std::remainder(summed[i] - b[i].angle(), 2 * pi<double>())));
+    worst = std::max(worst, angle_gap(summed[i], b[i].angle()));
     in_range = in_range && summed[i] >= -pi<double>() && summed[i] <= pi<double>() &&
                (std::abs(summed[i]) < 3 || std::signbit(summed[i]) == std::signbit(b[i].angle()));  // atan2's side
   }

@@ -274,11 +274,8 @@ BOOST_AUTO_TEST_CASE(kept_link_poses_give_the_table_of_a_fresh_evaluation_on_eve
         link_poses_at(m, VectorX<double>(kept.q(k)), fresh);
         const SE2<double>* got = kept.link_poses(k);
         const double* angle = kept.link_angles(k);
-        for (std::size_t i = 0; i < fresh.size(); ++i)
-          worst = std::max({worst, std::abs(got[i].cos_angle() - fresh[i].cos_angle()),
-                            std::abs(got[i].sin_angle() - fresh[i].sin_angle()),
-                            (got[i].translation() - fresh[i].translation()).cwiseAbs().maxCoeff() / m.length_scale,
-                            std::abs(std::remainder(angle[i] - fresh[i].angle(), 2 * pi<double>()))});
+        worst = std::max(worst, testing::link_pose_difference(got, fresh.data(), fresh.size(), m.length_scale));
+        for (std::size_t i = 0; i < fresh.size(); ++i) worst = std::max(worst, testing::angle_gap(angle[i], fresh[i].angle()));
       }
       BOOST_TEST(with_values > 0);
       BOOST_TEST(worst <= 16 * eps);

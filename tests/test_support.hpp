@@ -1,10 +1,15 @@
-// Small helpers shared by the test executables: scratch files, reading text back, catching input errors.
+// Small helpers shared by the test executables: scratch files, reading text back, catching input errors,
+// comparing link poses.
 #pragma once
 
 #include <boost/test/unit_test.hpp>
 
 #include "rollkin/io/input_error.hpp"
+#include "rollkin/se2.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,5 +63,18 @@ inline bool contains(const std::string& s, const std::string& part) {
   BOOST_TEST_MESSAGE("\"" << s << "\" does not contain \"" << part << "\"");
   return false;
 }
+
+/// The largest difference of `links` link poses a[i] and b[i]: of the rotations' cosines and sines, and of
+/// the translations over `length` (the mechanism's length scale).
+inline double link_pose_difference(const SE2<double>* a, const SE2<double>* b, std::size_t links, double length) {
+  double worst = 0;
+  for (std::size_t i = 0; i < links; ++i)
+    worst = std::max({worst, std::abs(a[i].cos_angle() - b[i].cos_angle()), std::abs(a[i].sin_angle() - b[i].sin_angle()),
+                      (a[i].translation() - b[i].translation()).cwiseAbs().maxCoeff() / length});
+  return worst;
+}
+
+/// |a - b| for two angles in radians, whole turns apart counted as equal.
+inline double angle_gap(double a, double b) { return std::abs(std::remainder(a - b, 2 * pi<double>())); }
 
 }  // namespace rollkin::testing
