@@ -8,7 +8,7 @@
 
 #include "rollkin/io/units.hpp"
 #include "rollkin/scalar_mpfr.hpp"
-#include "rollkin/solve/continuation.hxx"  // compiled here for 30 and 100 digits
+#include "rollkin/solve/sweep.hxx"  // compiled here for 30 and 100 digits
 #include "rollkin/solve/mpfr50_instances.hpp"  // the 50-digit solver: src/solve/instantiate_mpfr50.cpp
 
 namespace rollkin {

@@ -352,7 +352,7 @@ template <class S> S angle_of(const S& a, const SE2<S>& r) {
 }  // namespace detail
 
 /// World pose of every link at q into pose[0 .. links), from the pair states in d evaluated at values next
-/// to q: a sweep's accepted pose takes one Newton step after its last evaluation (continuation.hxx,
+/// to q: a sweep's accepted pose takes one Newton step after its last evaluation (solve/tracer.hxx,
 /// take_closing_step), so its link poses need no evaluation of their own. Each spanning-tree edge's
 /// transform E, evaluated at values q_e (PairState::evaluated_value), is moved to q to first order:
 ///   E(q) = exp(xi) E(q_e),   xi = sum_j lambda_j (q_j - q_e,j)   (lambda_j = (dE/dq_j) E^-1, pair.hpp),

@@ -2,7 +2,8 @@
 // translation unit, so that the sweep inlines the Newton solve it calls).
 // The headers declare these `extern template` with the same lists (ROLLKIN_*_INSTANCES), so every other
 // translation unit that calls them for double only parses them (docs/benchmark.md, "Build times").
-#include "rollkin/solve/continuation.hxx"
+#include "rollkin/solve/sweep.hxx"
+#include "rollkin/solve/tracer.hxx"
 
 namespace rollkin {
 

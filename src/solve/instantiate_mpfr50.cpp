@@ -1,6 +1,7 @@
 // The solver in mpfr50, compiled once (include/rollkin/solve/mpfr50_instances.hpp declares these `extern
 // template` with the same lists; docs/benchmark.md, "Build times").
-#include "rollkin/solve/continuation.hxx"
+#include "rollkin/solve/sweep.hxx"
+#include "rollkin/solve/tracer.hxx"
 #include "rollkin/solve/mpfr50_instances.hpp"
 
 namespace rollkin {
