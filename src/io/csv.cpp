@@ -4,36 +4,9 @@
 #include "rollkin/io/input_error.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <stdexcept>
 
 namespace rollkin::io {
-
-namespace {
-
-/// The longest text put_double writes: the shortest round-trip form of a double takes at most 24 characters.
-constexpr std::size_t kMaxNumber = 24;
-
-/// Writes v at p as format_double does; returns one past its last character.
-char* put_double(char* p, double v) {
-  if (std::isnan(v)) return std::copy_n("nan", 3, p);
-  if (std::isinf(v)) return v > 0 ? std::copy_n("inf", 3, p) : std::copy_n("-inf", 4, p);
-  return std::to_chars(p, p + kMaxNumber, v).ptr;
-}
-
-}  // namespace
-
-void append_double(std::string& out, double v) {
-  char buf[kMaxNumber];
-  out.append(buf, put_double(buf, v));
-}
-
-std::string format_double(double v) {
-  std::string out;
-  append_double(out, v);
-  return out;
-}
 
 std::string csv_field(const std::string& field) {
   // Control characters (a name may hold any) are escaped so that every row stays one line of plain text.
@@ -79,7 +52,7 @@ void append_csv_row(std::string& out, const double* values, std::size_t count, c
   // Room for the longest row, filled in place and cut to what was written: two size changes per row instead
   // of two appends per number.
   const std::size_t at = out.size();
-  out.resize(at + count * (kMaxNumber + 1) + field.size() + 2);
+  out.resize(at + count * (kMaxDoubleText + 1) + field.size() + 2);
   char* p = out.data() + at;
   for (std::size_t i = 0; i < count; ++i) {
     if (i) *p++ = ',';

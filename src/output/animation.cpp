@@ -3,7 +3,6 @@
 #include "animation_assets.hpp"  // generated: animation.css and animation.js as string literals
 
 #include "rollkin/analysis/centrodes.hpp"
-#include "rollkin/io/csv.hpp"
 #include "rollkin/output/decimate.hpp"
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/svg/markup.hpp"

@@ -2,7 +2,7 @@
 // shares: each link's sketch in its own frame and the contact points.
 #include "rollkin/output/drawing.hpp"
 
-#include "rollkin/io/csv.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/output/svg_drawing.hpp"
 #include "rollkin/io/svg/markup.hpp"
 

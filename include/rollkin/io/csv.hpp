@@ -1,7 +1,7 @@
 // Small CSV writer for result tables: a header row, rows of doubles each written as the shortest text that
-// reads back (strtod) to the identical double (std::to_chars; non-finite values as nan / inf / -inf) and an
-// optional trailing text column (e.g. a solver status). Fields are quoted per RFC 4180 only when they
-// contain a comma, a double quote, CR or LF. Lines end with '\n'. Files are written atomically
+// reads back (strtod) to the identical double (io::format_double, io/format.hpp; non-finite values as nan /
+// inf / -inf) and an optional trailing text column (e.g. a solver status). Fields are quoted per RFC 4180
+// only when they contain a comma, a double quote, CR or LF. Lines end with '\n'. Files are written atomically
 // (io/atomic_file.hpp): PATH.tmp, then rename; on failure std::runtime_error naming PATH.
 //
 //   rollkin::io::CsvWriter csv({"theta2_deg", "x", "theta23_deg"}, "status");
@@ -9,16 +9,13 @@
 //   csv.write("out/paper_fourbar.csv");
 #pragma once
 
+#include "rollkin/io/format.hpp"
+
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace rollkin::io {
-
-/// The shortest decimal text of v that reads back (strtod) to v exactly (std::to_chars); "nan", "inf",
-/// "-inf" for non-finite values. append_double appends it to `out`.
-std::string format_double(double v);
-void append_double(std::string& out, double v);
 
 /// The field as it must appear in a CSV line: control characters written as escapes ("\n", "\r",
 /// "\t", "\x1b") so that a row is one line, then double-quoted with inner quotes doubled when it

@@ -5,7 +5,7 @@
 // segments dxf/convert.cpp, the chains dxf/chain.cpp.
 #include "collector.hpp"
 
-#include "rollkin/io/csv.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/units.hpp"
 

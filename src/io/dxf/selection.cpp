@@ -3,7 +3,6 @@
 // and walked into a DxfContour; the entry points parse_dxf_contour and read_dxf_contour.
 #include "detail.hpp"
 
-#include "rollkin/io/csv.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/units.hpp"
 

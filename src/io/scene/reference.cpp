@@ -1,4 +1,4 @@
-#include "rollkin/io/csv.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/scene/reader.hpp"
 
 namespace rollkin::io {

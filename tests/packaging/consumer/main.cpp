@@ -1,6 +1,6 @@
 // Uses the installed rollkin: header-only SE(2) algebra in double and in MPFR (links MPFR/GMP through the
-// exported targets) and the compiled library (CSV formatting). Exit status 0 only if every check passes.
-#include <rollkin/io/csv.hpp>
+// exported targets) and the compiled library (number formatting). Exit status 0 only if every check passes.
+#include <rollkin/io/format.hpp>
 #include <rollkin/scalar_mpfr.hpp>
 #include <rollkin/se2.hpp>
 
