@@ -1,5 +1,6 @@
 #include "rollkin/io/point_file.hpp"
 
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
 
 #include <charconv>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 
 namespace rollkin::io {
 namespace {
@@ -189,6 +191,46 @@ std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t m
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source, std::size_t min_points,
                                            double scale) {
   return parse_text(text, source, min_points, scale).points;
+}
+
+// ---- writing ----------------------------------------------------------------------------------------------
+
+PointFileText& PointFileText::comment(const std::string& text) {
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = text.find('\n', start);
+    const std::string_view line = std::string_view(text).substr(start, end == std::string::npos ? end : end - start);
+    text_ += "# " + excerpt(line, std::string::npos) + "\n";
+    if (end == std::string::npos) return *this;
+    start = end + 1;
+  }
+}
+
+PointFileText& PointFileText::header() {
+  if (has_point_) throw std::logic_error("PointFileText::header: the header line \"x y\" must come before the first point");
+  text_ += "x y\n";
+  return *this;
+}
+
+PointFileText& PointFileText::point(const Vec2<double>& p) {
+  if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+    throw std::invalid_argument("PointFileText::point: (" + format_double(p.x()) + ", " + format_double(p.y()) +
+                                ") is not finite; a point file holds finite coordinates only");
+  append_double(text_, p.x());
+  text_ += ' ';
+  append_double(text_, p.y());
+  text_ += '\n';
+  has_point_ = true;
+  return *this;
+}
+
+PointFileText& PointFileText::points(const std::vector<Vec2<double>>& ps) {
+  for (const Vec2<double>& p : ps) point(p);
+  return *this;
+}
+
+std::string point_file_text(const std::string& what, const std::vector<Vec2<double>>& points) {
+  return PointFileText().comment(what).points(points).text();
 }
 
 }  // namespace rollkin::io

@@ -1,8 +1,9 @@
 // The centrode files of `rollkin centrodes` and Python's Scene.centrodes (rollkin/output/centrode_files.hpp).
 #include "rollkin/output/centrode_files.hpp"
 
-#include "rollkin/io/csv.hpp"
 #include "rollkin/io/dxf/writer.hpp"
+#include "rollkin/io/format.hpp"
+#include "rollkin/io/point_file.hpp"
 
 #include <cstring>
 
@@ -14,25 +15,25 @@ std::string centrode_text(const SweepOutput& ctx, const std::vector<InstantCentr
   const std::string& frame = m.links[in_a ? a : b].name;
   const std::string unit = ctx.scene.unit_label(ctx.sweep.variable);
   auto input = [&](std::size_t k) { return ctx.sweep.input + " = " + io::format_double(ctx.inputs[k]) + (unit.empty() ? "" : " " + unit); };
-  std::string text = "# rollkin centrodes: instant centre of link '" + m.links[b].name + "' relative to link '" +
-                     m.links[a].name + "', in link '" + frame + "''s frame (" + ctx.scene.length_unit + ")\n" +
-                     "# scene " + base_name(ctx.scene.file) + "; " + ctx.sweep.input + " from " + io::format_double(ctx.sweep.from) +
-                     " to " + io::format_double(ctx.sweep.to) + " step " + io::format_double(ctx.sweep.step) +
-                     "; one point per input value, in sweep order\nx y\n";
+  io::PointFileText text;
+  text.comment("rollkin centrodes: instant centre of link '" + m.links[b].name + "' relative to link '" + m.links[a].name +
+               "', in link '" + frame + "''s frame (" + ctx.scene.length_unit + ")");
+  text.comment("scene " + base_name(ctx.scene.file) + "; " + ctx.sweep.input + " from " + io::format_double(ctx.sweep.from) +
+               " to " + io::format_double(ctx.sweep.to) + " step " + io::format_double(ctx.sweep.step) +
+               "; one point per input value, in sweep order");
+  text.header();
   for (std::size_t k = 0; k < centres.size(); ++k) {
     const InstantCentre<double>& c = centres[k];
     const SolveStatus status = ctx.result.status(k);
-    if (c.finite) {
-      const Vec2<double>& x = in_a ? c.in_a : c.in_b;
-      text += io::format_double(x.x()) + " " + io::format_double(x.y()) + "\n";
-    } else if (!ctx.result.has_pose(k)) {
-      text += "# " + input(k) + ": not solved (" + to_string(status) + ")\n";
-    } else {
-      text += "# " + input(k) + ": centre at infinity (pure relative translation, direction (" +
-              io::format_double(c.direction.x()) + ", " + io::format_double(c.direction.y()) + ") in the world frame)\n";
-    }
+    if (c.finite)
+      text.point(in_a ? c.in_a : c.in_b);
+    else if (!ctx.result.has_pose(k))
+      text.comment(input(k) + ": not solved (" + to_string(status) + ")");
+    else
+      text.comment(input(k) + ": centre at infinity (pure relative translation, direction (" +
+                   io::format_double(c.direction.x()) + ", " + io::format_double(c.direction.y()) + ") in the world frame)");
   }
-  return text;
+  return text.text();
 }
 namespace {
 

@@ -10,6 +10,11 @@
 // UTF-16/UTF-32 text or NUL bytes, bare-CR line ends, decimal commas ("1,5 2,5"), a third column. Each point is multiplied by `scale` (the file's
 // unit in scene units, e.g. 0.001 for a file in mm read into a scene in m). Errors are InputError naming the
 // file, the 1-based line and what was expected.
+//
+// Written by PointFileText (synthesised profiles and pitch curves, envelopes, centrodes), so that every file
+// rollkin writes in this format reads back to the same doubles:
+//
+//   const std::string text = io::PointFileText().comment("cam profile").points(profile).text();
 #pragma once
 
 #include "rollkin/io/input_error.hpp"
@@ -36,5 +41,30 @@ std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t m
 /// The same for text already in memory; `source` names it in messages.
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source,
                                            std::size_t min_points, double scale = 1.0);
+
+/// The text of a point file: comment lines, an optional header line "x y", one line "x y" per point with each
+/// number the shortest text that reads back to the same double (io::format_double). What it writes,
+/// read_point_file reads back to the same points.
+class PointFileText {
+ public:
+  /// Each line of `text` (split at '\n') as a comment line "# line", its control characters escaped (excerpt(),
+  /// io/input_error.hpp) so that a comment never ends its line or holds a byte the reader refuses.
+  PointFileText& comment(const std::string& text);
+  /// The header line "x y"; std::logic_error after a point (the reader takes a header as the first line that is
+  /// not a comment only).
+  PointFileText& header();
+  /// One line "x y"; std::invalid_argument for a non-finite coordinate (the reader refuses it).
+  PointFileText& point(const Vec2<double>& p);
+  PointFileText& points(const std::vector<Vec2<double>>& ps);
+
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+  bool has_point_ = false;
+};
+
+/// The point file of `points` after the comment `what`: PointFileText().comment(what).points(points).text().
+std::string point_file_text(const std::string& what, const std::vector<Vec2<double>>& points);
 
 }  // namespace rollkin::io
