@@ -6,6 +6,7 @@
 #include "rollkin/io/dxf/writer.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json/document.hpp"
+#include "rollkin/output/synthesis_files.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
@@ -84,6 +85,7 @@ py::dict synthesize_cam(const py::object& spec_arg, const py::object& base_dir) 
   out["folds"] = folds;
   out["profile"] = xy_array(profile.points);
   out["profile_tolerance"] = profile.profile_tolerance;
+  out["svg"] = rollkin::output::cam_svg(spec, profile);
   json contour = {{"name", "profile"}, {"type", "samples"}, {"points", points_json(profile.points)}, {"closed", true}};
   out["contour"] = to_python(contour);
   if (!profile.envelope.defects.empty()) {  // undercut: no scene, no round trip
@@ -103,13 +105,13 @@ py::dict synthesize_cam(const py::object& spec_arg, const py::object& base_dir) 
   r["solved"] = rt.solved;
   r["worst_deviation"] = rt.worst_deviation / unit;
   r["tolerance"] = spec.tolerance / unit;
-  r["max_pressure_angle_deg"] = rt.max_pressure_angle * 180 / pi<double>();
+  r["max_pressure_angle_deg"] = rad_to_deg(rt.max_pressure_angle);
   r["min_radius_of_curvature"] = rt.min_radius_of_curvature;
   r["ok"] = rt.problems.empty() && rt.solved == rt.poses && rt.worst_deviation <= spec.tolerance;
   std::vector<double> theta, pressure, analysed, prescribed;
   for (const auto& p : rt.solved_poses) {
     theta.push_back(rollkin::io::from_radians(p.theta, spec.angle_unit));
-    pressure.push_back(p.pressure_angle * 180 / pi<double>());
+    pressure.push_back(rad_to_deg(p.pressure_angle));
     analysed.push_back(p.analysed / unit);
     prescribed.push_back(p.prescribed / unit);
   }
@@ -135,6 +137,7 @@ py::dict synthesize_gears(const py::object& spec_arg, const py::object& base_dir
   out["gear1"] = xy_array(d.pair.gear1);
   out["gear2"] = xy_array(d.pair.gear2);
   out["min_curvature"] = py::make_tuple(d.min_curvature1, d.min_curvature2);
+  out["svg"] = rollkin::output::gear_svg(spec, d);
   json doc = synthesis::gear_scene(spec, d, "gear1.txt", "gear2.txt");
   json c1 = {{"name", "pitch"}, {"type", "samples"}, {"points", points_json(d.pair.gear1)}, {"closed", true}};
   json c2 = {{"name", "pitch"}, {"type", "samples"}, {"points", points_json(d.pair.gear2)}, {"closed", true}};
@@ -194,7 +197,9 @@ void bind_synthesis(py::module_& m) {
   m.def("synthesize_cam", &synthesize_cam, py::arg("spec"), py::kw_only(), py::arg("base_dir") = py::none(),
         "The disk cam of a cam spec (a dict or a spec file; docs/synthesis.md), analysed by the scene made from it.\n"
         "Returns a dict: profile ((n, 2) array, counter-clockwise, the cam's frame), contour (the samples dict a\n"
-        "scene takes), nurbs (the same curve as an exact nurbs dict; not when undercut), folds (cam angle, what: an undercut; then scene and round_trip are None), jumps (the law's\n"
+        "scene takes), nurbs (the same curve as an exact nurbs dict; not when undercut), svg (the picture of the\n"
+        "cam and follower at the law's start that `rollkin synthesize cam` writes as PREFIX.svg), folds (cam angle,\n"
+        "what: an undercut; then scene and round_trip are None), jumps (the law's\n"
         "discontinuities), scene (a Scene with the profile inline) and round_trip (worst_deviation, tolerance, ok,\n"
         "max_pressure_angle_deg, min_radius_of_curvature, and per pose cam_angle, pressure_angle_deg, analysed,\n"
         "prescribed).\n"
@@ -203,7 +208,8 @@ void bind_synthesis(py::module_& m) {
   m.def("synthesize_gears", &synthesize_gears, py::arg("spec"), py::kw_only(), py::arg("base_dir") = py::none(),
         "A non-circular gear pair from a gear spec (dict or file; docs/synthesis.md). Returns a dict: closes,\n"
         "closure_error (angle unit); when it closes also gear1, gear2 ((n, 2) arrays), contours (two samples dicts),\n"
-        "min_curvature (per gear), scene and round_trip (worst_deviation of gear2.phi from -f, ok).");
+        "min_curvature (per gear), svg (the picture `rollkin synthesize gears` writes as PREFIX.svg), scene and\n"
+        "round_trip (worst_deviation of gear2.phi from -f, ok).");
   m.def("envelope", &envelope, py::arg("scene"), py::arg("link_a"), py::arg("link_b"), py::arg("contour"), py::kw_only(),
         py::arg("start") = py::none(), py::arg("tolerance") = py::none(),
         "The envelope on link_a of link_b's contour (\"B.name\") under the scene's sweep (docs/synthesis.md).\n"

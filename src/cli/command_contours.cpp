@@ -4,7 +4,7 @@
 #include "commands.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
-#include "rollkin/output/svg_drawing.hpp"
+#include "rollkin/output/contour_picture.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,7 +36,7 @@ Command contours_command(CLI::App& rollkin) {
       "element), entities, closed or open, length, bounding box and corners in drawing units (SVG: viewport units,\n"
       "y up, as a scene without units.length reads them), and the contour object that selects exactly it: paste\n"
       "it into a scene's \"contours\" with a \"name\" (its \"file\" is the path given here: make it relative to\n"
-      "the scene's directory). docs/cli.md, \"rollkin contours\".\n"
+      "the scene's directory).\n"
       "Exit status: 0 listed; 2 bad input (a drawing that cannot be read: the message names the file, the\n"
       "element or entity and what to change) or command line, nothing written; 3 out of memory.");
   return {app, [o] { return run_contours(*o); }};
@@ -62,28 +62,6 @@ nlohmann::ordered_json chain_json(const io::ListedChain& c) {
   return j;
 }
 
-/// The drawing with every chain in its own colour and numbered at its start, as listed.
-std::string picture(const std::string& file, const std::vector<io::ListedChain>& chains) {
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-  io::SvgDrawing d(900, 700, 30);
-  d.set_title(fs::path(file).filename().string() + ": " + std::to_string(chains.size()) + " chain(s)");
-  for (std::size_t k = 0; k < chains.size(); ++k) {
-    const io::ListedChain& c = chains[k];
-    std::vector<Eigen::Vector2d> points;
-    for (const auto& s : c.segments) {
-      BezierPath<double> piece({s}, false);
-      for (int i = (points.empty() ? 0 : 1); i <= 24; ++i) points.push_back(piece.jet(i / 24.0, 0).p);
-    }
-    io::Stroke st;
-    st.color = colours[k % (sizeof colours / sizeof *colours)];
-    st.width = 1.4;
-    d.add_polyline(points, st, c.closed);
-    d.add_point(points.front(), st.color, 3.0);
-    d.add_text(points.front(), std::to_string(k + 1), 11.0, st.color);
-  }
-  return d.to_svg();
-}
-
 int run_contours(const ContoursOptions& o) {
   io::OutputSet outputs({o.file});
   const std::size_t draw = o.draw.empty() ? 0 : outputs.add("--draw", o.draw);  // checked before reading
@@ -105,7 +83,7 @@ int run_contours(const ContoursOptions& o) {
     }
   }
   if (!o.draw.empty()) {
-    outputs.set(draw, picture(o.file, chains));
+    outputs.set(draw, output::contour_listing_svg(o.file, chains));
     outputs.commit();
   }
   return 0;

@@ -1,18 +1,15 @@
 // `rollkin synthesize cam SPEC.json --out PREFIX`: the disk cam that gives a follower a motion law, written as
 // a point file, a DXF SPLINE, an SVG drawing and the scene that analyses it, then proved by that analysis
-// (docs/synthesis.md).
+// (docs/synthesis.md); likewise `synthesize gears` and `synthesize envelope`. The files are built by
+// output/synthesis_files.hpp, which Python's synthesize_cam and synthesize_gears call too.
 #include "commands.hpp"
 
-#include "rollkin/io/csv.hpp"
-#include "rollkin/io/dxf/writer.hpp"
-#include "rollkin/synthesis/cam.hpp"
-#include "rollkin/synthesis/gears.hpp"
+#include "rollkin/output/synthesis_files.hpp"
 #include "rollkin/synthesis/scene_envelope.hpp"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace rollkin::cli {
 namespace {
@@ -62,15 +59,16 @@ Command synthesize_command(CLI::App& rollkin) {
   auto g = std::make_shared<SynthesizeCamOptions>();
   CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
   gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
-  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf and PREFIX.json (scene)")
+  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
       ->required()
       ->type_name("PREFIX");
   gears->footer(
       "Samples both pitch curves (r1 = E f'/(1 + f'), r2 = E/(1 + f')) until their fitted splines are within a\n"
       "sixteenth of the tolerance (times E) of the true curves at every mid-angle, reports whether the pair closes\n"
       "(f(phi + 360) = f(phi) + 360) and the smallest curvature of each curve (convex or not), writes the curves,\n"
-      "their DXF and the scene rolling them (revolutes gear1, gear2, rolling pair mesh), all or nothing, then\n"
-      "solves that scene over one turn and prints the worst deviation of gear2.phi from -f(gear1.phi).\n"
+      "their DXF, a picture of the pair at its start (PREFIX.svg) and the scene rolling them (revolutes gear1,\n"
+      "gear2, rolling pair mesh), all or nothing, then solves that scene over one turn and prints the worst\n"
+      "deviation of gear2.phi from -f(gear1.phi).\n"
       "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
       "written); 2 bad input; 3 out of memory.");
   auto e = std::make_shared<SynthesizeEnvelopeOptions>();
@@ -99,78 +97,6 @@ Command synthesize_command(CLI::App& rollkin) {
 }
 
 namespace {
-
-/// A point file (docs/scene_format.md, "Point files"): the comment line `what`, then one "x y" line per point,
-/// each number the shortest text that reads back to the same double.
-std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
-  std::string out = "# " + what + "\n";
-  for (const auto& p : points) {
-    io::append_double(out, p.x());
-    out += ' ';
-    io::append_double(out, p.y());
-    out += '\n';
-  }
-  return out;
-}
-
-std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
-  return points_text("cam profile written by rollkin synthesize cam from " + spec.file +
-                         "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
-                         (spec.length_label.empty() ? std::string("as the spec") : spec.length_label),
-                     points);
-}
-
-/// A follower given as any contour, at the law's start in the world: 400 points of its domain placed in the
-/// follower's frame (translating: the world's axes at the follower's origin; oscillating: the arm's at the pivot).
-std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  std::vector<Vec2<double>> out;
-  if (spec.contact != synthesis::FollowerContact::Contour) return out;
-  const Contour<double>& c = spec.follower_shape->mechanism.contours[0];
-  const SE2<double> place(spec.motion == synthesis::FollowerMotion::Oscillating ? spec.start_angle : 0.0, profile.follower_origin);
-  const int n = 400;
-  for (int i = 0; i <= n; ++i) out.push_back(place.act(c.jet(c.domain().lo + (c.domain().hi - c.domain().lo) * i / n, 0).p));
-  return out;
-}
-
-/// The cam (filled profile) and the follower at the law's start, y up, the cam centre marked.
-std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
-  auto grow = [&](const Vec2<double>& p, double r) {
-    lo_x = std::min(lo_x, p.x() - r);
-    hi_x = std::max(hi_x, p.x() + r);
-    lo_y = std::min(lo_y, p.y() - r);
-    hi_y = std::max(hi_y, p.y() + r);
-  };
-  for (const auto& p : profile.points) grow(p, 0);
-  const Vec2<double> f = profile.follower_origin;
-  const std::vector<Vec2<double>> shape = follower_contour_points(spec, profile);
-  if (spec.contact == synthesis::FollowerContact::Roller) grow(f, spec.roller_radius);
-  else if (spec.contact == synthesis::FollowerContact::Flat) grow(f, profile.face_half_length);
-  for (const auto& p : shape) grow(p, 0);
-  if (spec.motion == synthesis::FollowerMotion::Oscillating) grow(spec.pivot, 0);
-  const double margin = 0.05 * std::max(hi_x - lo_x, hi_y - lo_y);
-  std::ostringstream s;
-  s.precision(10);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << lo_x - margin << " " << -hi_y - margin << " "
-    << hi_x - lo_x + 2 * margin << " " << hi_y - lo_y + 2 * margin << "\">\n<g transform=\"scale(1,-1)\" fill=\"none\" "
-    << "stroke=\"black\" stroke-width=\"" << margin / 10 << "\">\n<path id=\"cam\" fill=\"#dde\" d=\"M";
-  for (const auto& p : profile.points) s << " " << p.x() << " " << p.y();
-  s << " Z\"/>\n";
-  if (spec.contact == synthesis::FollowerContact::Contour) {
-    s << "<path id=\"follower\" d=\"M";
-    for (const auto& p : shape) s << " " << p.x() << " " << p.y();
-    s << "\"/>\n";
-  } else if (spec.contact == synthesis::FollowerContact::Roller)
-    s << "<circle id=\"roller\" cx=\"" << f.x() << "\" cy=\"" << f.y() << "\" r=\"" << spec.roller_radius << "\"/>\n";
-  else
-    s << "<line id=\"face\" x1=\"" << f.x() - profile.face_half_length << "\" y1=\"" << f.y() << "\" x2=\""
-      << f.x() + profile.face_half_length << "\" y2=\"" << f.y() << "\"/>\n";
-  if (spec.motion == synthesis::FollowerMotion::Oscillating && spec.contact != synthesis::FollowerContact::Contour)
-    s << "<line id=\"arm\" x1=\"" << spec.pivot.x() << "\" y1=\"" << spec.pivot.y() << "\" x2=\"" << f.x() << "\" y2=\""
-      << f.y() << "\"/>\n";
-  s << "<circle id=\"cam_centre\" cx=\"0\" cy=\"0\" r=\"" << margin / 5 << "\"/>\n</g>\n</svg>\n";
-  return s.str();
-}
 
 /// The law's unit for messages: the length unit, or the angle unit of an oscillating follower.
 std::string law_value(const synthesis::CamSpec& spec, double v) {
@@ -211,11 +137,10 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
 
   g_doing = "building the output files";
   const std::string profile_name = std::filesystem::path(txt).filename().string();
-  outputs.set(i_txt, profile_text(spec, profile.points));
-  SampledProfile<double> spline(profile.points, SplineOptions<double>{true});
-  outputs.set(i_dxf, io::dxf_text({io::spline_of(spline, "CAM")}, spec.length_label));
-  outputs.set(i_svg, drawing_svg(spec, profile));
-  outputs.set(i_scene, synthesis::cam_scene(spec, profile, profile_name).dump(2) + "\n");
+  outputs.set(i_txt, output::cam_profile_text(spec, profile));
+  outputs.set(i_dxf, output::cam_dxf(spec, profile));
+  outputs.set(i_svg, output::cam_svg(spec, profile));
+  outputs.set(i_scene, output::cam_scene_text(spec, profile, profile_name));
   g_doing = "writing the output files";
   outputs.commit();
 
@@ -227,7 +152,7 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   std::cout << "round trip (" << scene_file << ", " << rt.solved << "/" << rt.poses << " poses solved):\n";
   std::cout << "  worst deviation of the follower from the law: " << law_value(spec, rt.worst_deviation) << " at cam angle "
             << angle_value(spec, rt.worst_deviation_at) << " (tolerance " << law_value(spec, spec.tolerance) << ")\n";
-  std::cout << "  largest pressure angle: " << io::format_number(rt.max_pressure_angle * 180 / pi<double>(), 10) << " deg at cam angle "
+  std::cout << "  largest pressure angle: " << io::format_number(rad_to_deg(rt.max_pressure_angle), 10) << " deg at cam angle "
             << angle_value(spec, rt.max_pressure_angle_at) << "\n";
   std::cout << "  smallest radius of curvature of the profile: " << io::format_number(rt.min_radius_of_curvature, 10)
             << (rt.min_radius_of_curvature < 0 ? " (concave)" : "") << " at cam angle " << angle_value(spec, rt.min_radius_at) << "\n";
@@ -242,9 +167,11 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
   g_doing = "reading the gear spec";
   const synthesis::GearSpec spec = synthesis::read_gear_spec(o.spec);
   io::OutputSet outputs(spec.files_read);
-  const std::string f1 = o.out + ".1.txt", f2 = o.out + ".2.txt", dxf = o.out + ".dxf", scene_file = o.out + ".json";
+  const std::string f1 = o.out + ".1.txt", f2 = o.out + ".2.txt", dxf = o.out + ".dxf", svg = o.out + ".svg",
+                    scene_file = o.out + ".json";
   const std::size_t i1 = outputs.add("--out (gear 1)", f1), i2 = outputs.add("--out (gear 2)", f2),
-                    i_dxf = outputs.add("--out (DXF)", dxf), i_scene = outputs.add("--out (scene)", scene_file);
+                    i_dxf = outputs.add("--out (DXF)", dxf), i_svg = outputs.add("--out (SVG)", svg),
+                    i_scene = outputs.add("--out (scene)", scene_file);
   const std::string deg = io::unit_label(spec.angle_unit);
   if (std::abs(spec.closure_error) > spec.tolerance) {
     std::cerr << o.spec << ": the pair does not close: f(phi + " << io::format_number(io::from_radians(2 * pi<double>(), spec.angle_unit))
@@ -254,23 +181,19 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
   }
   g_doing = "computing the pitch curves";
   const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
-  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
-  outputs.set(i1, points_text(what + "gear 1 (pivot at the origin)", d.pair.gear1));
-  outputs.set(i2, points_text(what + "gear 2 (pivot at the origin of its frame)", d.pair.gear2));
-  SplineOptions<double> closed;
-  closed.closed = true;
-  outputs.set(i_dxf, io::dxf_text({io::spline_of(SampledProfile<double>(d.pair.gear1, closed), "GEAR1"),
-                                   io::spline_of(SampledProfile<double>(d.pair.gear2, closed), "GEAR2")},
-                                  spec.length_label));
-  outputs.set(i_scene, synthesis::gear_scene(spec, d, std::filesystem::path(f1).filename().string(),
-                                             std::filesystem::path(f2).filename().string()).dump(2) + "\n");
+  outputs.set(i1, output::gear_pitch_text(spec, d, 1));
+  outputs.set(i2, output::gear_pitch_text(spec, d, 2));
+  outputs.set(i_dxf, output::gear_dxf(spec, d));
+  outputs.set(i_svg, output::gear_svg(spec, d));
+  outputs.set(i_scene, output::gear_scene_text(spec, d, std::filesystem::path(f1).filename().string(),
+                                               std::filesystem::path(f2).filename().string()));
   g_doing = "writing the output files";
   outputs.commit();
   g_doing = "analysing the gears (round trip)";
   const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
   std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
             << io::format_number(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
-            << scene_file << "\n";
+            << svg << ", " << scene_file << "\n";
   for (int gear = 1; gear <= 2; ++gear) {
     const double kappa = gear == 1 ? d.min_curvature1 : d.min_curvature2, at = gear == 1 ? d.min_curvature1_at : d.min_curvature2_at;
     std::cout << "  gear " << gear << ": " << (kappa > 0 ? "convex" : "NOT convex (teeth cut on it would undercut)")
@@ -312,15 +235,13 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
   const std::vector<Vec2<double>> pts = env.points();
   run.set_output("--out (points)", [&] {
-    return points_text("envelope of " + o.contour + " in the frame of link " + o.links[0] + ", written by rollkin synthesize envelope from " +
-                           scene.file + (env.closed ? " (closed)" : " (open)"),
-                       pts);
+    return output::envelope_text("envelope of " + o.contour + " in the frame of link " + o.links[0] +
+                                     ", written by rollkin synthesize envelope from " + scene.file + (env.closed ? " (closed)" : " (open)"),
+                                 pts);
   });
   const bool drawable = env.defects.empty() && pts.size() >= 4;
   if (drawable) {
-    SplineOptions<double> so;
-    so.closed = env.closed;
-    run.set_output("--out (DXF)", [&] { return io::dxf_text({io::spline_of(SampledProfile<double>(pts, so), "ENVELOPE")}, scene.length_unit); });
+    run.set_output("--out (DXF)", [&] { return output::envelope_dxf(pts, env.closed, scene.length_unit); });
   } else {
     run.omit_output("--out (DXF)");
   }

@@ -173,10 +173,10 @@ check "an output that would overwrite the spec: exit 2, spec unchanged, nothing 
 cat > ell.json <<EOF
 {"units": {"length": "mm", "angle": "deg"}, "centre_distance": 80, "transmission": {"kind": "elliptical", "eccentricity": 0.5}}
 EOF
-"$BIN" synthesize gears ell.json --out gears > gears.out 2>&1 && [ -s gears.1.txt ] && [ -s gears.2.txt ] && [ -s gears.dxf ] &&
+"$BIN" synthesize gears ell.json --out gears > gears.out 2>&1 && [ -s gears.1.txt ] && [ -s gears.2.txt ] && [ -s gears.dxf ] && [ -s gears.svg ] &&
   grep -q "gear 1: convex" gears.out && "$BIN" solve gears.json --csv gears.csv > /dev/null 2>&1 &&
   head -1 gears.csv | grep -q "^gear1.phi,gear2.phi,"
-check "elliptical gears: exit 0, convex, the scene's CSV has gear1.phi and gear2.phi" $?
+check "elliptical gears: exit 0, point files, DXF and picture written, convex, the scene's CSV has gear1.phi and gear2.phi" $?
 "$PYTHON" - <<'PY'
 import csv, math, sys
 k = 3.0  # (1 + e) / (1 - e), e = 0.5: tan(f / 2) = k tan(phi1 / 2), gear 2 turning back (gear2.phi = -f)

@@ -123,3 +123,55 @@ def test_nurbs_output_is_the_same_cam():
     assert np.max(np.abs(t["follower.s"] - s)) <= 1e-9 * 15
     env = rollkin.envelope(r["scene"], "cam", "follower", "follower.roller", tolerance=1e-7)
     assert env["nurbs"]["type"] == "nurbs" and env["nurbs"]["closed"] is True
+
+
+def _polygons_and_circles(svg):
+    """The <polygon> point lists ((n, 2) arrays, pixels) and <circle> (cx, cy, r) of an SVG document, by xml.etree."""
+    import xml.etree.ElementTree as ET
+    root = ET.fromstring(svg)
+    polygons = [np.array([[float(c) for c in p.split(",")] for p in e.get("points").split()])
+                for e in root.iter() if e.tag.endswith("polygon")]
+    circles = [(float(e.get("cx")), float(e.get("cy")), float(e.get("r")))
+               for e in root.iter() if e.tag.endswith("circle") and e.get("class") != "point"]
+    return polygons, circles
+
+
+def _pixel_map(world, pixels):
+    """The uniform scale s and offset (ox, oy) with pixels = (ox + s x, oy - s y), fitted by least squares, and the
+    largest distance of a pixel from that image of its world point (the canvas rounds to 0.01 px)."""
+    n = len(world)
+    a = np.zeros((2 * n, 3))
+    a[:n, 0], a[:n, 1] = world[:, 0], 1.0
+    a[n:, 0], a[n:, 2] = -world[:, 1], 1.0
+    (s, ox, oy), *_ = np.linalg.lstsq(a, np.concatenate([pixels[:, 0], pixels[:, 1]]), rcond=None)
+    image = np.column_stack([ox + s * world[:, 0], oy - s * world[:, 1]])
+    return s, ox, oy, np.max(np.abs(image - pixels))
+
+
+def test_cam_picture_draws_the_profile_and_the_roller_as_the_cli_writes_it(tmp_path):
+    """The picture Python returns is the file `rollkin synthesize cam` writes (one function draws both), and it
+    draws the profile and the roller where they are, to the canvas's two decimals."""
+    r = rollkin.synthesize_cam(str(CAM))
+    subprocess.run([CLI, "synthesize", "cam", str(CAM), "--out", str(tmp_path / "c")], check=True, capture_output=True)
+    assert (tmp_path / "c.svg").read_text() == r["svg"]
+    polygons, circles = _polygons_and_circles(r["svg"])
+    assert len(polygons) == 1 and len(polygons[0]) == len(r["profile"])
+    s, ox, oy, worst = _pixel_map(np.asarray(r["profile"]), polygons[0])
+    assert worst <= 0.01
+    # The roller (radius 10) at the law's start: centre (e, y0) = (12, sqrt(50^2 - 12^2)).
+    (cx, cy, radius), = circles
+    assert abs(radius - 10 * s) <= 0.01
+    assert abs(cx - (ox + 12 * s)) <= 0.01 and abs(cy - (oy - math.sqrt(50.0 ** 2 - 12.0 ** 2) * s)) <= 0.01
+
+
+def test_gear_picture_draws_both_pitch_curves_at_the_assembly_pose(tmp_path):
+    spec = SRC / "examples" / "synthesis" / "gears_elliptical.json"
+    g = rollkin.synthesize_gears(str(spec))
+    subprocess.run([CLI, "synthesize", "gears", str(spec), "--out", str(tmp_path / "g")], check=True, capture_output=True)
+    assert (tmp_path / "g.svg").read_text() == g["svg"]
+    polygons, _ = _polygons_and_circles(g["svg"])
+    assert len(polygons) == 2
+    # Elliptical: f(0) = 0, so gear 2 is its pitch curve moved to its pivot (80, 0), not turned.
+    world = np.vstack([g["gear1"], np.asarray(g["gear2"]) + [80.0, 0.0]])
+    s, _, _, worst = _pixel_map(world, np.vstack(polygons))
+    assert worst <= 0.01
