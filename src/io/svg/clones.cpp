@@ -13,28 +13,20 @@ std::string href_of(const pugi::xml_node& use) {
   return "";
 }
 
-/// Elements whose content is drawn only where something references it (SVG 1.1, 5.3, 5.5, 14.3, 14.4, 11.6, 13.3).
-bool is_referenced_only(const std::string& kind) {
-  return kind == "defs" || kind == "symbol" || kind == "clipPath" || kind == "mask" || kind == "marker" ||
-         kind == "pattern";
-}
-
 /// The child a <switch> draws: its first direct child that renders and whose conditions hold (SVG 1.1, 5.8.2;
 /// requiredExtensions: rollkin supports none, so any value fails; requiredFeatures always holds, as in SVG 2;
 /// systemLanguage depends on the viewer and is an error). Null when none does.
 pugi::xml_node switch_choice(const pugi::xml_node& sw, const Document& doc) {
-  static const char* rendering[] = {"g", "a", "use", "switch", "svg", "path", "circle", "ellipse", "rect", "line",
-                                    "polyline", "polygon", "text", "image", "foreignObject"};
   for (const pugi::xml_node c : sw.children()) {
     if (c.type() != pugi::node_element) continue;
     const std::string kind = local_name(c);
-    if (std::none_of(std::begin(rendering), std::end(rendering), [&](const char* r) { return kind == r; })) continue;
+    if (!renders(kind)) continue;
     if (c.attribute("requiredExtensions")) continue;
     if (const pugi::xml_attribute lang = c.attribute("systemLanguage"))
       doc.where(c).fail("which child of the <switch> (" + doc.location(sw) + ") is drawn depends on the viewer's "
                         "language (systemLanguage=\"" + std::string(lang.value()) + "\"); take the element you mean "
                         "out of the <switch>");
-    if (kind == "foreignObject")
+    if (kind == element::foreign_object)
       doc.where(c).fail("the <switch> (" + doc.location(sw) + ") draws a <foreignObject>, which has no contour. "
                         "Illustrator writes such a switch with \"Preserve Illustrator Editing Capabilities\": save "
                         "the SVG with that option turned off");
@@ -63,10 +55,9 @@ class DrawnCollector {
     if (depth > kMaxNesting)
       doc_.where(n).fail("is nested more than " + std::to_string(kMaxNesting) + " elements deep below the selected "
                          "element, which rollkin does not walk; select an element further in, or ungroup in the editor");
-    if (kind == "svg" && n != doc_.root)
+    if (kind == element::svg && n != doc_.root)
       doc_.where(n).fail("is a nested <svg> viewport, which rollkin does not apply; ungroup it in the editor");
-    const bool container = kind == "g" || kind == "a" || kind == "switch" || kind == "svg";
-    if (!container && !is_shape(kind) && kind != "use") return;  // not drawn, or nothing with a contour
+    if (!is_container(kind) && !is_shape(kind) && kind != element::use) return;  // not drawn, or nothing with a contour
     const std::size_t mine = uses_.empty() ? set.owners.add(n, owner) : owner;
     const Affine m = parent * own_transform(n, doc_, transforms);
     if (is_shape(kind)) {
@@ -76,9 +67,9 @@ class DrawnCollector {
       set.drawn.push_back({n, m, transforms, via_, uses_.empty() ? mine : use_owner_});
       return;
     }
-    if (kind == "use") return use(n, m, transforms, mine, depth);
+    if (kind == element::use) return use(n, m, transforms, mine, depth);
     if (const std::string e = unexpanded_entity(doc_, n); !e.empty()) doc_.where(n).fail(e);
-    if (kind == "switch") {
+    if (kind == element::switch_) {
       if (const pugi::xml_node c = switch_choice(n, doc_)) element(c, m, transforms, mine, depth + 1);
       return;
     }
@@ -118,7 +109,7 @@ class DrawnCollector {
     if (uses_.empty()) use_owner_ = owner;
     via_ = " (drawn by " + doc_.location(n) + ")" + via_;
     uses_.push_back(n);
-    if (local_name(t) == "symbol") {
+    if (local_name(t) == element::symbol) {
       m = m * own_transform(t, doc_, transforms) * symbol_viewbox(n, t);
       if (const std::string e = unexpanded_entity(doc_, t); !e.empty()) doc_.where(t).fail(e);
       for (const pugi::xml_node c : t.children())
@@ -174,7 +165,7 @@ std::string uses_of(const Document& doc, const pugi::xml_node& n) {
   std::string list;
   std::size_t count = 0;
   for_each_element(doc.root, [&](const pugi::xml_node& u) {
-    if (local_name(u) != "use" || std::find(hrefs.begin(), hrefs.end(), href_of(u)) == hrefs.end()) return;
+    if (local_name(u) != element::use || std::find(hrefs.begin(), hrefs.end(), href_of(u)) == hrefs.end()) return;
     if (++count <= 10) list += (list.empty() ? "" : ", ") + doc.location(u);
   });
   return list.empty() ? "no <use> references it" : "select the clone by its <use>'s id instead: " + list;
@@ -193,15 +184,15 @@ DrawnSet drawn_by(const Document& doc, const pugi::xml_node& selected) {
     if (is_referenced_only(kind))
       doc.where(selected).fail("the element is inside <" + kind + "> (" + doc.location(n) + "): it is drawn only "
                                "where a <use> clones it; " + uses_of(doc, selected));
-    if (kind == "switch" && switch_choice(n, doc) != child)
+    if (kind == element::switch_ && switch_choice(n, doc) != child)
       doc.where(selected).fail("the element is not drawn: the <switch> (" + doc.location(n) + ") draws only its "
                                "first child that renders, which is " +
                                (switch_choice(n, doc) ? doc.location(switch_choice(n, doc)) : std::string("none")) +
                                "; select an element of that child or take this one out of the <switch>");
-    if (kind == "svg")
+    if (kind == element::svg)
       doc.where(selected).fail("the element is inside a nested <svg> viewport (" + doc.location(n) +
                                "), which rollkin does not apply; ungroup it in the editor");
-    if (kind == "use" || is_shape(kind)) return {};  // content of a shape or of a <use> is not drawn
+    if (kind == element::use || is_shape(kind)) return {};  // content of a shape or of a <use> is not drawn
     try {
       m = own_transform(n, doc, transforms) * m;
     } catch (const InputError& e) {
@@ -231,7 +222,7 @@ DrawnSet drawn_in_document(const Document& doc) {
 /// The document's <style> sheets must not set CSS transforms (they could apply to any element).
 void check_style_sheets(const Document& doc) {
   for_each_element(doc.root, [&](const pugi::xml_node& n) {
-    if (local_name(n) == "style" && !css_transform_property(n.text().get()).empty())
+    if (local_name(n) == element::style && !css_transform_property(n.text().get()).empty())
       doc.where(n).fail("the document's <style> sheet sets a CSS transform (" + css_transform_property(n.text().get()) +
                         "), which rollkin does not apply; use transform attributes instead");
   });

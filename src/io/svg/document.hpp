@@ -2,7 +2,7 @@
 // (io/svg/reader.hpp) share. svg/document_map.cpp maps the document (lengths and units, transform attributes,
 // the root viewport), svg/clones.cpp walks what an element draws (<use>, <symbol>, <switch>),
 // svg/selection.cpp chooses one subpath ("subpath", "near"), svg/reader.cpp turns drawn elements into shapes
-// in scene units and holds the entry points.
+// in scene units and holds the entry points; svg/names.hpp is the table of element names they dispatch on.
 #pragma once
 
 #include "rollkin/io/format.hpp"
@@ -10,6 +10,8 @@
 #include "rollkin/io/svg/reader.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/scalar.hpp"
+
+#include "names.hpp"
 
 #include <pugixml.hpp>
 
@@ -118,9 +120,6 @@ template <class F> void for_each_element(const pugi::xml_node& root, F&& f) {
 
 /// The first transform-related CSS property a style sets, or "".
 std::string css_transform_property(const std::string& style);
-
-/// The shapes rollkin reads as contours.
-bool is_shape(const std::string& kind);
 
 /// Line numbers of byte offsets without rescanning the text for every element.
 class LineIndex {

@@ -268,12 +268,6 @@ std::string css_transform_property(const std::string& style) {
   return "";
 }
 
-/// The shapes rollkin reads as contours.
-bool is_shape(const std::string& kind) {
-  static const char* shapes[] = {"path", "circle", "ellipse", "rect", "line", "polyline", "polygon"};
-  return std::any_of(std::begin(shapes), std::end(shapes), [&](const char* s) { return kind == s; });
-}
-
 /// An XML entity reference left in the element content of a structural element (pugixml does not read the
 /// DOCTYPE's entity declarations): what it stands for is missing from the drawing.
 std::string unexpanded_entity(const Document& doc, const pugi::xml_node& container) {

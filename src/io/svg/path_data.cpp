@@ -34,7 +34,7 @@ std::vector<Segment> arc_to_rational_quadratics(const ArcCommand& a) {
   if (a.from == a.to) return {};
   double rx = std::abs(a.rx), ry = std::abs(a.ry);
   if (rx == 0 || ry == 0) return {Segment{{a.from, a.to}, {}}};  // F.6.6: treated as a straight line
-  const double phi = std::fmod(a.rotation_deg, 360.0) * kPi / 180.0;
+  const double phi = deg_to_rad(std::fmod(a.rotation_deg, 360.0));
   const double c = std::cos(phi), s = std::sin(phi);
   // F.6.5.1: the start point in the ellipse's axes, relative to the chord's midpoint.
   const P half = (a.from - a.to) / 2;

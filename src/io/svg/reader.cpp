@@ -111,12 +111,12 @@ std::vector<SvgSubpath> element_geometry(const pugi::xml_node& n, const std::str
     if (!(r > 0)) where.fail(std::string(name) + " must be positive, got " + fmt(r));
     return r;
   };
-  if (kind == "path") return path_geometry(n, file, where);
-  if (kind == "circle") {
+  if (kind == element::path) return path_geometry(n, file, where);
+  if (kind == element::circle) {
     const double r = positive(user_length(n, "r", where, std::nullopt), "r");
     return {ellipse_geometry(user_length(n, "cx", where, 0.0), user_length(n, "cy", where, 0.0), r, r, kind)};
   }
-  if (kind == "ellipse") {
+  if (kind == element::ellipse) {
     const bool has_rx = n.attribute("rx") && trimmed(n.attribute("rx").value()) != "auto";
     const bool has_ry = n.attribute("ry") && trimmed(n.attribute("ry").value()) != "auto";
     if (!has_rx && !has_ry) where.fail("has neither rx nor ry; expected the radii rx=\"...\" ry=\"...\"");
@@ -124,8 +124,8 @@ std::vector<SvgSubpath> element_geometry(const pugi::xml_node& n, const std::str
     const double ry = positive(user_length(n, has_ry ? "ry" : "rx", where, std::nullopt), "ry");
     return {ellipse_geometry(user_length(n, "cx", where, 0.0), user_length(n, "cy", where, 0.0), rx, ry, kind)};
   }
-  if (kind == "rect") return {rect_geometry(n, where)};
-  if (kind == "line") {
+  if (kind == element::rect) return {rect_geometry(n, where)};
+  if (kind == element::line) {
     const P a(user_length(n, "x1", where, 0.0), user_length(n, "y1", where, 0.0));
     const P b(user_length(n, "x2", where, 0.0), user_length(n, "y2", where, 0.0));
     if (a == b) where.fail("has zero length (x1, y1 = x2, y2); a contour needs a non-zero extent");
@@ -134,9 +134,9 @@ std::vector<SvgSubpath> element_geometry(const pugi::xml_node& n, const std::str
     g.origins = {"the line"};
     return {g};
   }
-  if (kind == "polyline" || kind == "polygon") return {poly_geometry(n, kind == "polygon", kind, where)};
-  where.fail("is a <" + kind + ">, which rollkin does not read as a contour; expected path, circle, ellipse, rect, "
-             "line, polyline or polygon (convert it to a path in the editor: Path > Object to Path)");
+  if (kind == element::polyline || kind == element::polygon) return {poly_geometry(n, kind == element::polygon, kind, where)};
+  where.fail("is a <" + kind + ">, which rollkin does not read as a contour; expected " + shape_names() +
+             " (convert it to a path in the editor: Path > Object to Path)");
 }
 
 // ---- finding the element --------------------------------------------------------------------------------
@@ -179,7 +179,7 @@ pugi::xml_node parse_document(pugi::xml_document& doc, const std::string& text, 
                      std::string("malformed XML: ") + r.description() + "; expected a well-formed SVG document");
   }
   const pugi::xml_node root = doc.document_element();
-  if (local_name(root) != "svg")
+  if (local_name(root) != element::svg)
     throw InputError(file, element_location(text, root),
                      "the root element is <" + std::string(root.name()) + ">; expected an SVG document (<svg>)");
   return root;
@@ -308,10 +308,11 @@ std::vector<SvgShape> shapes_of(const std::string& text, const std::string& id, 
   location = doc.location(selected);
   if (selected == doc.root) return drawn_shapes(doc, drawn_in_document(doc), options);
   const std::string kind = local_name(selected);
-  if (!is_shape(kind) && kind != "g" && kind != "a" && kind != "use" && kind != "switch")
-    doc.where(selected).fail("is a <" + kind + ">, which rollkin does not read as a contour; expected path, circle, "
-                             "ellipse, rect, line, polyline or polygon, or a group or <use> that draws them (convert "
-                             "it to a path in the editor: Path > Object to Path)");
+  const bool draws_shapes = is_shape(kind) || kind == element::use || (is_container(kind) && kind != element::svg);
+  if (!draws_shapes)
+    doc.where(selected).fail("is a <" + kind + ">, which rollkin does not read as a contour; expected " + shape_names() +
+                             ", or a group or <use> that draws them (convert it to a path in the editor: Path > "
+                             "Object to Path)");
   return drawn_shapes(doc, drawn_by(doc, selected), options);
 }
 
