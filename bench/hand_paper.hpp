@@ -13,6 +13,8 @@
 // The Jacobian is in closed form; Newton from a secant prediction through the last two poses.
 #pragma once
 
+#include "rollkin/scalar.hpp"  // deg_to_rad only
+
 #include <cmath>
 #include <vector>
 
@@ -91,7 +93,7 @@ inline Assembly assemble() {
 /// Sweeps theta2 (degrees) over from + k step, k = 0..n-1, from the assembly (reached from 0 in 1-degree
 /// steps); writes X and phi per pose. Returns the Newton iterations over the n poses, or -1 on a failure.
 inline long sweep(double from_deg, double step_deg, long n, std::vector<Unknowns>& out) {
-  const double deg = 3.14159265358979323846 / 180;
+  const double deg = rollkin::deg_to_rad(1.0);
   const Assembly as = assemble();
   Unknowns u = as.u;
   for (double t = 0; t > from_deg; t = std::fmax(t - 1, from_deg))

@@ -91,7 +91,7 @@ std::vector<Case> make_cases(bool quick) {
   const double ga = 2, ge = 0.5, gb = ga * std::sqrt(1 - ge * ge);
   for (bool rolling : {true, false}) {
     const std::string scene = rolling ? "gears" : "cam";
-    const double start = rolling ? 0 : 30 * pi<double>() / 180;
+    const double start = rolling ? 0 : deg_to_rad(30.0);
     const std::string kind = rolling ? "elliptical gears" : "elliptical cam pair";
     Case c;
     c.name = kind + ": analytic";
@@ -141,7 +141,7 @@ std::vector<Case> make_cases(bool quick) {
         o.closed = true;
         return std::vector<Shape>{SampledProfile<double>(s[0], o), SampledProfile<double>(s[1], o)};
       };
-      const double start = rolling ? 0 : 30 * pi<double>() / 180;
+      const double start = rolling ? 0 : deg_to_rad(30.0);
       c.mechanism = [rolling, start](const std::vector<Shape>& s) { return NonCircularGears{}.scene(s[0], s[1], rolling, start); };
       cs.push_back(c);
     }

@@ -157,7 +157,7 @@ const Reference& Bench::reference(const std::string& scene) {
   } else if (scene == "gears") {
     r = sweep_reference(testing::elliptical_gears<M>(M(2), M(1) / M(2), true), in);
   } else if (scene == "cam") {
-    r = sweep_reference(testing::elliptical_gears<M>(M(2), M(1) / M(2), false, {}, M(30) * pi<M>() / M(180)), in);
+    r = sweep_reference(testing::elliptical_gears<M>(M(2), M(1) / M(2), false, {}, deg_to_rad(M(30))), in);
   } else if (scene == "noncircular" || scene == "noncircular_cam") {
     // No analytic profile type for these pitch curves: the reference is the transmission function itself,
     // phi2 = -f(phi1), evaluated in mpfr50 (the pose the exact pitch curves give).

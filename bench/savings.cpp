@@ -145,7 +145,7 @@ std::vector<Saving> measure_savings(Bench& bench, const std::vector<Row>& rows) 
   for (const char* scene : {"paper", "cam"}) {
     const testing::Fixture<double> f =
         std::string(scene) == "paper" ? paper
-                                      : testing::elliptical_gears<double>(2, 0.5, false, {}, 30 * pi<double>() / 180);
+                                      : testing::elliptical_gears<double>(2, 0.5, false, {}, deg_to_rad(30.0));
     const std::vector<double>& inputs = bench.inputs(scene);
     ContinuationSettings<double> cfg;
     std::map<Predictor, SweepTiming> t;

@@ -27,7 +27,7 @@ using testing::Fixture;
 
 namespace {
 
-const double kDeg = pi<double>() / 180;
+const double kDeg = deg_to_rad(1.0);
 
 struct Family {
   std::string name;

@@ -71,7 +71,7 @@ inline Fixture<double> paper_scene(const Shape& parabola, const Shape& rim3, con
   b.revolute("O_B", l1, l4, SE2<double>(0, Vec2d(7, -2)), SE2<double>(), "theta5");
   b.driver(oa);
   Fixture<double> f{b.build(), VectorX<double>(6), {1, 2}};
-  const double deg = pi<double>() / 180;
+  const double deg = deg_to_rad(1.0);
   // The analytic fixture's guess, mapped to each representation's parameters: vertex, disk 3 at 180 deg
   // (both held at assembly), disk 3 at -3 deg, disk 4 at 117 deg.
   f.guess << 0, param_near(parabola, Vec2d(0, 0)), param_near(rim3, on_circle(1, 180 * deg)),

@@ -214,7 +214,7 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
                    {"variables", {"u", "v"}}, {"values", {0, follower_value}}});
   scene["pairs"] = pairs;
   scene["inputs"] = json::array({"cam.theta"});
-  const double turn = deg ? 360 : 2 * pi<double>(), step = deg ? 1 : pi<double>() / 180;
+  const double turn = deg ? 360 : 2 * pi<double>(), step = deg ? 1 : deg_to_rad(1.0);
   scene["sweep"] = {{"input", "cam.theta"}, {"from", 0}, {"to", spec.rotation * turn}, {"step", spec.rotation * step}};
   return scene;
 }

@@ -135,7 +135,7 @@ json gear_scene(const GearSpec& spec, const GearDesign& d, const std::string& fi
        {{"name", "mesh"}, {"type", "rolling"}, {"contours", {"gear1.pitch", "gear2.pitch"}}, {"variables", {"u1", "u2"}},
         {"values", {0, chord}}, {"hold", {true, false}}}});
   scene["inputs"] = json::array({"gear1.phi"});
-  scene["sweep"] = {{"input", "gear1.phi"}, {"from", 0}, {"to", angle_out(2 * pi<double>())}, {"step", angle_out(pi<double>() / 180)}};
+  scene["sweep"] = {{"input", "gear1.phi"}, {"from", 0}, {"to", angle_out(2 * pi<double>())}, {"step", angle_out(deg_to_rad(1.0))}};
   return scene;
 }
 

@@ -168,11 +168,11 @@ template <class S> bool refuse_contact_off_contour(const Mechanism<S>& m, const 
   if (!off) return false;
   const Contour<S>& c = m.contours[off.contour];
   const bool angle = c.parameter_kind() == ParamKind::Angle;
-  const double unit = angle ? 180 / pi<double>() : 1;
+  const double value = to_double(q(off.variable));
   std::ostringstream os;
   os.precision(10);
   os << "the contact of pair '" << m.pairs[off.pair].name << "' lies at " << m.variables[off.variable].name << " = "
-     << to_double(q(off.variable)) * unit << (angle ? " deg" : "") << ", beyond the end of contour '" << c.name()
+     << (angle ? rad_to_deg(value) : value) << (angle ? " deg" : "") << ", beyond the end of contour '" << c.name()
      << "', which is drawn for " << to_double(c.domain().lo) * unit << " .. " << to_double(c.domain().hi) * unit
      << (angle ? " deg" : "") << "; give the pair \"values\" on the drawn contour (or draw the contour where the"
      << " contact is)";
