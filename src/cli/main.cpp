@@ -1,4 +1,4 @@
-// build/rollkin: the command-line tool.
+// build/rollkin: the command-line tool (the reference of every command: docs/cli.md).
 //
 //   rollkin solve SCENE [--from V --to V --step V] [--csv FILE] [--plot FILE.svg] [--draw FILE.svg]
 //                       [--animate FILE.html] [--rates] [--analysis] [--verbose] [--interference] [--max-steps N]
@@ -69,6 +69,15 @@ std::string subcommand_names(const CLI::App* command) {
   return names;
 }
 
+/// Ends the --help of every command below `command` with the section of docs/cli.md that is its reference,
+/// "rollkin synthesize cam" for `rollkin synthesize cam` (tests/repo/doc_references.py checks they exist).
+void add_reference_lines(CLI::App& command) {
+  for (CLI::App* sub : command.get_subcommands([](CLI::App*) { return true; })) {
+    sub->footer(sub->get_footer() + "\nReference: docs/cli.md, \"rollkin " + command_path(sub) + "\".");
+    add_reference_lines(*sub);
+  }
+}
+
 std::string unexpected_argument(const CLI::App& rollkin, const CLI::App* command, int argc, char** argv) {
   command = innermost(command);
   const std::vector<std::string> extras = rollkin.remaining(true);
@@ -112,11 +121,12 @@ int main(int argc, char** argv) {
   CLI::App rollkin("rollkin: kinematic analysis of planar mechanisms with rolling pairs", "rollkin");
   rollkin.set_version_flag("--version", "rollkin " ROLLKIN_VERSION);
   rollkin.get_formatter()->column_width(24);
-  rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'.\n" +
-                 std::string(kExitStatus));
+  rollkin.footer("Run 'rollkin COMMAND --help' for the options of a command, e.g. 'rollkin solve --help'; the\n"
+                 "reference of every command: docs/cli.md.\n" + std::string(kExitStatus));
   const std::vector<Command> commands{solve_command(rollkin), reference_command(rollkin), centrodes_command(rollkin),
                                       check_command(rollkin), contours_command(rollkin),
                                       synthesize_command(rollkin)};
+  add_reference_lines(rollkin);
   const CLI::App* chosen = nullptr;
   try {
     try {

@@ -1,4 +1,4 @@
-// Reading a gear spec (docs/synthesis.md, "The gear spec"): every problem an InputError naming the spec file and
+// Reading a gear spec (docs/synthesis.md, "Non-circular gears"): every problem an InputError naming the spec file and
 // the JSON path.
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"

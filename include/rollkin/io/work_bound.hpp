@@ -1,4 +1,4 @@
-// Bounded work (docs/reliability.md, "Bounded work"): the one rule the command line (--max-steps) and the
+// Bounded work (docs/reliability.md, "Numbers"): the one rule the command line (--max-steps) and the
 // Python module (max_steps=) apply before solving a sweep.
 //
 //   max_steps: a finite number of at least 1 (default 1e7); NaN, infinities and values below 1 are refused.

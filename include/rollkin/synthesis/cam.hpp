@@ -82,12 +82,12 @@ EnvelopeProblem<double> cam_envelope_problem(const CamSpec& spec);
 /// Throws io::InputError (at the spec's "contact" or "base_radius") when the follower cannot touch the cam.
 CamProfile synthesise_cam(const CamSpec& spec);
 
-/// The scene that analyses the cam (docs/synthesis.md, "The scene written"): revolute `cam` (theta), the
+/// The scene that analyses the cam (docs/synthesis.md, "rollkin synthesize cam": PREFIX.json): revolute `cam` (theta), the
 /// follower on the pair `follower` (s or phi, zero at the law's zero), the cam pair `contact` of the profile
 /// (a closed `samples` contour read from `profile_file`, relative to the scene) and the follower's contour.
 nlohmann::ordered_json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string& profile_file);
 
-/// The round trip's figures (docs/synthesis.md, "The round trip").
+/// The round trip's figures (docs/synthesis.md, "rollkin synthesize cam": the round trip).
 struct CamRoundTrip {
   std::size_t poses = 0, solved = 0;
   double worst_deviation = 0;          // max |analysed - prescribed| follower motion (law's unit)

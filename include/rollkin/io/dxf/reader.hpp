@@ -61,7 +61,7 @@
 // empty selection, malformed numbers or counts in a considered entity, degenerate geometry, two entities with
 // one handle, a file that ends inside an entity. Text after group 0 EOF is ignored (libdxflib is given the
 // text up to it). Numbers are plain decimals read once by
-// std::from_chars, the texts on which libdxflib's own conversion agrees (docs/scene_format.md, "Numbers").
+// std::from_chars, the texts on which libdxflib's own conversion agrees (docs/scene_format.md, "dxf contours").
 // How skipped entities are found: libdxflib calls processCodeValuePair for every group before it
 // interprets it; the reader's adapter records from it, for every entity of the ENTITIES and BLOCKS sections
 // (block definitions: for INSERTs), its type
