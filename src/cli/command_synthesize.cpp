@@ -4,6 +4,7 @@
 // output/synthesis_files.hpp, which Python's synthesize_cam and synthesize_gears call too.
 #include "commands.hpp"
 
+#include "rollkin/io/point_file.hpp"
 #include "rollkin/output/synthesis_files.hpp"
 #include "rollkin/synthesis/scene_envelope.hpp"
 
@@ -137,10 +138,11 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
 
   g_doing = "building the output files";
   const std::string profile_name = std::filesystem::path(txt).filename().string();
-  outputs.set(i_txt, output::cam_profile_text(spec, profile));
-  outputs.set(i_dxf, output::cam_dxf(spec, profile));
-  outputs.set(i_svg, output::cam_svg(spec, profile));
-  outputs.set(i_scene, output::cam_scene_text(spec, profile, profile_name));
+  output::CamFiles files = output::cam_files(spec, profile, profile_name);
+  outputs.set(i_txt, std::move(files.profile));
+  outputs.set(i_dxf, std::move(files.dxf));
+  outputs.set(i_svg, std::move(files.svg));
+  outputs.set(i_scene, std::move(files.scene));
   g_doing = "writing the output files";
   outputs.commit();
 
@@ -181,12 +183,13 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
   }
   g_doing = "computing the pitch curves";
   const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
-  outputs.set(i1, output::gear_pitch_text(spec, d, 1));
-  outputs.set(i2, output::gear_pitch_text(spec, d, 2));
-  outputs.set(i_dxf, output::gear_dxf(spec, d));
-  outputs.set(i_svg, output::gear_svg(spec, d));
-  outputs.set(i_scene, output::gear_scene_text(spec, d, std::filesystem::path(f1).filename().string(),
-                                               std::filesystem::path(f2).filename().string()));
+  output::GearFiles files =
+      output::gear_files(spec, d, std::filesystem::path(f1).filename().string(), std::filesystem::path(f2).filename().string());
+  outputs.set(i1, std::move(files.gear1));
+  outputs.set(i2, std::move(files.gear2));
+  outputs.set(i_dxf, std::move(files.dxf));
+  outputs.set(i_svg, std::move(files.svg));
+  outputs.set(i_scene, std::move(files.scene));
   g_doing = "writing the output files";
   outputs.commit();
   g_doing = "analysing the gears (round trip)";
@@ -235,9 +238,9 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
   const std::vector<Vec2<double>> pts = env.points();
   run.set_output("--out (points)", [&] {
-    return output::envelope_text("envelope of " + o.contour + " in the frame of link " + o.links[0] +
-                                     ", written by rollkin synthesize envelope from " + scene.file + (env.closed ? " (closed)" : " (open)"),
-                                 pts);
+    return io::point_file_text("envelope of " + o.contour + " in the frame of link " + o.links[0] +
+                                   ", written by rollkin synthesize envelope from " + scene.file + (env.closed ? " (closed)" : " (open)"),
+                               pts);
   });
   const bool drawable = env.defects.empty() && pts.size() >= 4;
   if (drawable) {

@@ -26,6 +26,9 @@ std::string style_fill(const Fill& f) {
   return out;
 }
 
+/// ` id="..."` for a non-empty id, else nothing.
+std::string id_attribute(const std::string& id) { return id.empty() ? "" : " id=\"" + xml_escape(id) + "\""; }
+
 }  // namespace
 
 SvgDrawing::SvgDrawing(int width_px, int height_px, double margin_px)
@@ -72,24 +75,26 @@ SvgDrawing& SvgDrawing::set_world_box(double xmin, double ymin, double xmax, dou
 }
 
 SvgDrawing& SvgDrawing::add_polyline(const std::vector<Eigen::Vector2d>& points, const Stroke& stroke, bool closed,
-                                     const Fill& fill) {
+                                     const Fill& fill, const std::string& id) {
   Item it;
   it.kind = Kind::Polyline;
   it.points = points;
   it.stroke = stroke;
   it.fill = fill;
   it.closed = closed;
+  it.id = id;
   items_.push_back(std::move(it));
   return *this;
 }
 
 SvgDrawing& SvgDrawing::add_circle(const Eigen::Vector2d& center, double radius, const Stroke& stroke,
-                                   const Fill& fill) {
+                                   const Fill& fill, const std::string& id) {
   Item it;
   it.kind = Kind::Circle;
   it.points = {center};
   it.stroke = stroke;
   it.fill = fill;
+  it.id = id;
   it.radius = std::abs(radius);
   items_.push_back(std::move(it));
   return *this;
@@ -190,19 +195,22 @@ std::string SvgDrawing::to_svg() const {
         const auto runs = finite_runs(ps.size(), [&](std::size_t i) { return ps[i].allFinite(); });
         const bool whole = runs.size() == 1 && runs[0].first == 0 && runs[0].second == ps.size();
         if (it.closed && whole) {
-          o << "<polygon points=\"" << pts(ps, 0, ps.size()) << "\"" << style_stroke(it.stroke) << style_fill(it.fill)
-            << "/>\n";
+          o << "<polygon" << id_attribute(it.id) << " points=\"" << pts(ps, 0, ps.size()) << "\"" << style_stroke(it.stroke)
+            << style_fill(it.fill) << "/>\n";
         } else {
+          const bool group = !it.id.empty() && runs.size() > 1;
+          if (group) o << "<g" << id_attribute(it.id) << ">\n";
           for (const auto& r : runs)
-            o << "<polyline points=\"" << pts(ps, r.first, r.second) << "\"" << style_stroke(it.stroke)
-              << " fill=\"none\"/>\n";
+            o << "<polyline" << (group ? "" : id_attribute(it.id)) << " points=\"" << pts(ps, r.first, r.second) << "\""
+              << style_stroke(it.stroke) << " fill=\"none\"/>\n";
+          if (group) o << "</g>\n";
         }
         break;
       }
       case Kind::Circle: {
         if (!it.points[0].allFinite() || !std::isfinite(it.radius)) break;
         const Eigen::Vector2d c = P(it.points[0]);
-        o << "<circle cx=\"" << svg_pixel(c.x()) << "\" cy=\"" << svg_pixel(c.y()) << "\" r=\"" << svg_pixel(v.scale * it.radius) << "\""
+        o << "<circle" << id_attribute(it.id) << " cx=\"" << svg_pixel(c.x()) << "\" cy=\"" << svg_pixel(c.y()) << "\" r=\"" << svg_pixel(v.scale * it.radius) << "\""
           << style_stroke(it.stroke) << style_fill(it.fill) << "/>\n";
         break;
       }

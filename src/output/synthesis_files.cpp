@@ -51,30 +51,19 @@ std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec
 
 }  // namespace
 
-std::string cam_profile_text(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  return io::PointFileText()
-      .comment("cam profile written by rollkin synthesize cam from " + spec.file)
-      .comment("closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
-               (spec.length_label.empty() ? std::string("as the spec") : spec.length_label))
-      .points(profile.points)
-      .text();
-}
-
-std::string cam_dxf(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  return io::dxf_text({closed_spline(profile.points, "CAM")}, spec.length_label);
-}
-
 std::string cam_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
   io::SvgDrawing d(kWidth, kHeight, kMargin);
   d.set_title(base_name(spec.file) + ": cam and follower at the law's start");
-  d.add_polyline(profile.points, body_stroke(1), true, body_fill(1));
+  d.add_polyline(profile.points, body_stroke(1), true, body_fill(1), "cam");
   const Vec2<double> f = profile.follower_origin;
   switch (spec.contact) {
-    case synthesis::FollowerContact::Contour: d.add_polyline(follower_contour_points(spec, profile), body_stroke(2)); break;
-    case synthesis::FollowerContact::Roller: d.add_circle(f, spec.roller_radius, body_stroke(2)); break;
+    case synthesis::FollowerContact::Contour:
+      d.add_polyline(follower_contour_points(spec, profile), body_stroke(2), false, {}, "follower");
+      break;
+    case synthesis::FollowerContact::Roller: d.add_circle(f, spec.roller_radius, body_stroke(2), {}, "roller"); break;
     case synthesis::FollowerContact::Flat: {
       const Vec2<double> half(profile.face_half_length, 0);
-      d.add_polyline({Vec2<double>(f - half), Vec2<double>(f + half)}, body_stroke(2));
+      d.add_polyline({Vec2<double>(f - half), Vec2<double>(f + half)}, body_stroke(2), false, {}, "face");
       break;
     }
   }
@@ -82,7 +71,7 @@ std::string cam_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile&
     if (spec.contact != synthesis::FollowerContact::Contour) {
       io::Stroke arm = body_stroke(2);
       arm.width = 2.4;  // as --draw draws a link's body
-      d.add_polyline({spec.pivot, f}, arm);
+      d.add_polyline({spec.pivot, f}, arm, false, {}, "arm");
     }
     add_pivot(d, spec.pivot, "follower");  // the revolute of cam_scene
   }
@@ -91,19 +80,18 @@ std::string cam_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile&
   return d.to_svg();
 }
 
-std::string cam_scene_text(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile,
-                           const std::string& profile_file) {
-  return synthesis::cam_scene(spec, profile, profile_file).dump(2) + "\n";
-}
-
-std::string gear_pitch_text(const synthesis::GearSpec& spec, const synthesis::GearDesign& design, int gear) {
-  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
-  return gear == 1 ? io::point_file_text(what + "gear 1 (pivot at the origin)", design.pair.gear1)
-                   : io::point_file_text(what + "gear 2 (pivot at the origin of its frame)", design.pair.gear2);
-}
-
-std::string gear_dxf(const synthesis::GearSpec& spec, const synthesis::GearDesign& design) {
-  return io::dxf_text({closed_spline(design.pair.gear1, "GEAR1"), closed_spline(design.pair.gear2, "GEAR2")}, spec.length_label);
+CamFiles cam_files(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile, const std::string& profile_file) {
+  CamFiles f;
+  f.profile = io::PointFileText()
+                  .comment("cam profile written by rollkin synthesize cam from " + spec.file)
+                  .comment("closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
+                           (spec.length_label.empty() ? std::string("as the spec") : spec.length_label))
+                  .points(profile.points)
+                  .text();
+  f.dxf = io::dxf_text({closed_spline(profile.points, "CAM")}, spec.length_label);
+  f.svg = cam_svg(spec, profile);
+  f.scene = synthesis::cam_scene(spec, profile, profile_file).dump(2) + "\n";
+  return f;
 }
 
 std::string gear_svg(const synthesis::GearSpec& spec, const synthesis::GearDesign& design) {
@@ -114,21 +102,24 @@ std::string gear_svg(const synthesis::GearSpec& spec, const synthesis::GearDesig
   const SE2<double> place2(-synthesis::transmission(spec).f(0), pivot2);
   std::vector<Vec2<double>> gear2;
   for (const Vec2<double>& p : design.pair.gear2) gear2.push_back(place2.act(p));
-  d.add_polyline(design.pair.gear1, body_stroke(1), true, body_fill(1));
-  d.add_polyline(gear2, body_stroke(2), true, body_fill(2));
+  d.add_polyline(design.pair.gear1, body_stroke(1), true, body_fill(1), "gear1");
+  d.add_polyline(gear2, body_stroke(2), true, body_fill(2), "gear2");
   d.add_point(design.pair.gear1.front(), "#d62728", 3.5, io::Marker::Dot);  // the contact: gear 1's first sample
   add_pivot(d, Vec2<double>::Zero(), "gear1");
   add_pivot(d, pivot2, "gear2");
   return d.to_svg();
 }
 
-std::string gear_scene_text(const synthesis::GearSpec& spec, const synthesis::GearDesign& design,
-                            const std::string& file1, const std::string& file2) {
-  return synthesis::gear_scene(spec, design, file1, file2).dump(2) + "\n";
-}
-
-std::string envelope_text(const std::string& what, const std::vector<Vec2<double>>& points) {
-  return io::point_file_text(what, points);
+GearFiles gear_files(const synthesis::GearSpec& spec, const synthesis::GearDesign& design, const std::string& file1,
+                     const std::string& file2) {
+  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
+  GearFiles f;
+  f.gear1 = io::point_file_text(what + "gear 1 (pivot at the origin)", design.pair.gear1);
+  f.gear2 = io::point_file_text(what + "gear 2 (pivot at the origin of its frame)", design.pair.gear2);
+  f.dxf = io::dxf_text({closed_spline(design.pair.gear1, "GEAR1"), closed_spline(design.pair.gear2, "GEAR2")}, spec.length_label);
+  f.svg = gear_svg(spec, design);
+  f.scene = synthesis::gear_scene(spec, design, file1, file2).dump(2) + "\n";
+  return f;
 }
 
 std::string envelope_dxf(const std::vector<Vec2<double>>& points, bool closed, const std::string& length_unit) {

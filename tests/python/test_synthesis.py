@@ -131,6 +131,7 @@ def _polygons_and_circles(svg):
     root = ET.fromstring(svg)
     polygons = [np.array([[float(c) for c in p.split(",")] for p in e.get("points").split()])
                 for e in root.iter() if e.tag.endswith("polygon")]
+    assert all(e.get("id") for e in root.iter() if e.tag.endswith("polygon"))  # selectable: {"type": "svg", "path": id}
     circles = [(float(e.get("cx")), float(e.get("cy")), float(e.get("r")))
                for e in root.iter() if e.tag.endswith("circle") and e.get("class") != "point"]
     return polygons, circles

@@ -41,12 +41,14 @@ class SvgDrawing {
   SvgDrawing& set_world_box(double xmin, double ymin, double xmax, double ymax);
 
   /// Polyline through world points. A non-finite point breaks it into separate pieces; a closed polyline
-  /// without breaks is drawn as a <polygon> (optionally filled), with breaks as open pieces.
+  /// without breaks is drawn as a <polygon> (optionally filled), with breaks as open pieces. A non-empty `id`
+  /// is the element's id attribute (of a <g> around the pieces when there are several), so that a scene can
+  /// select it ({"type": "svg", "path": id}); the caller keeps ids unique.
   SvgDrawing& add_polyline(const std::vector<Eigen::Vector2d>& points, const Stroke& stroke = {},
-                           bool closed = false, const Fill& fill = {});
-  /// Circle of world radius r.
+                           bool closed = false, const Fill& fill = {}, const std::string& id = {});
+  /// Circle of world radius r; `id` as for add_polyline.
   SvgDrawing& add_circle(const Eigen::Vector2d& center, double radius, const Stroke& stroke = {},
-                         const Fill& fill = {});
+                         const Fill& fill = {}, const std::string& id = {});
   /// Marker of a fixed pixel size at a world point.
   SvgDrawing& add_point(const Eigen::Vector2d& p, const std::string& color = "#000000", double size_px = 3.0,
                         Marker marker = Marker::Dot);
@@ -78,7 +80,7 @@ class SvgDrawing {
     bool closed = false;
     double radius = 0;  // circle: world radius; point: px size
     Marker marker = Marker::Dot;
-    std::string text, color;
+    std::string text, color, id;
     double size = 11, dx = 0, dy = 0;
   };
   struct View {
