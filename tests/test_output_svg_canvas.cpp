@@ -497,6 +497,31 @@ BOOST_AUTO_TEST_CASE(closed_polyline_with_break_and_fixed_box) {
   BOOST_CHECK_THROW(d.set_world_box(0, 0, kNaN, 1), std::invalid_argument);
 }
 
+// Ids name drawn items so that a scene can select them ({"type": "svg", "path": id}; the synthesis pictures, output/
+// synthesis_files.hpp): on the polygon, the polyline or the circle itself, on a <g> around the pieces of a broken
+// polyline; escaped; no id attribute without one.
+BOOST_AUTO_TEST_CASE(ids_name_the_drawn_items) {
+  SvgDrawing d(300, 300, 10);
+  d.add_polyline({{0, 0}, {1, 0}, {1, 1}}, Stroke{}, true, Fill{}, "cam");
+  d.add_polyline({{0, 0}, {1, 0}, {kNaN, kNaN}, {1, 1}, {0, 1}}, Stroke{}, false, Fill{}, "a\"<b");
+  d.add_polyline({{0, 0}, {2, 2}}, Stroke{}, false, Fill{}, "face");
+  d.add_circle({0, 0}, 1, Stroke{}, Fill{}, "roller");
+  d.add_polyline({{0, 0}, {-1, 0}});
+  const auto els = parse_xml(d.to_svg());
+  std::map<std::string, std::string> named;  // id -> element name
+  std::size_t without = 0;
+  for (const auto& e : els) {
+    if (e.attrs.count("id")) named[e.attrs.at("id")] = e.name;
+    else without += e.name == "polyline" ? 1 : 0;
+  }
+  BOOST_TEST(named["cam"] == "polygon");
+  BOOST_TEST(named["a\"<b"] == "g");
+  BOOST_TEST(named["face"] == "polyline");
+  BOOST_TEST(named["roller"] == "circle");
+  BOOST_TEST(named.size() == 4u);
+  BOOST_TEST(without == 3u);  // the two pieces inside the <g>, the line without an id
+}
+
 // The box of a drawing whose only contour is a straight line parallel to an axis has zero height (or width):
 // widened by 5% of the other extent on each side, so the line sets the scale and sits in the middle; a point
 // by 10% of its largest coordinate (at least 1). Before, set_world_box refused it ("need finite xmin < xmax")
