@@ -92,12 +92,13 @@ if ROLLKIN:
         scan_text(f"rollkin {' '.join(path)} --help".replace("  ", " "), out.stdout, False)
         if path and "docs/cli.md, \"rollkin " + " ".join(path) + "\"" not in out.stdout:
             problems.append(f"rollkin {' '.join(path)} --help: does not name its section of docs/cli.md")
-        listing = out.stdout.split("SUBCOMMANDS:", 1)
+        listing = out.stdout.split("\nSubcommands:\n", 1)  # CLI11's group of subcommands, one "  name  text" each
         if len(listing) == 2:
             for line in listing[1].split("\n"):
                 m = re.match(r"  ([a-z][a-z-]*)\s", line)
-                if m:
-                    todo.append(path + [m.group(1)])
+                if not m:
+                    break
+                todo.append(path + [m.group(1)])
 
 for p in problems:
     print(p)
