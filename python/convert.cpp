@@ -5,6 +5,7 @@
 #include "rollkin/io/json/document.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 namespace rollkin::python {
@@ -152,6 +153,47 @@ py::str text_of(const std::string& text) {
   PyObject* s = PyUnicode_DecodeFSDefaultAndSize(text.data(), static_cast<Py_ssize_t>(text.size()));
   if (!s) throw py::error_already_set();
   return py::reinterpret_steal<py::str>(s);
+}
+
+// ---- the sweep table as NumPy arrays ------------------------------------------------------------------------
+
+void add_columns(rollkin::io::SweepColumns& t, const std::vector<py::str>& keys, py::dict& out) {
+  if (!t.values) return;  // no table (never built)
+  const std::size_t rows = t.rows();
+  double* const block = t.values.get();
+  const py::capsule owner(block, [](void* p) { delete[] static_cast<double*>(p); });
+  t.values.release();  // the capsule owns the block now
+  auto& api = py::detail::npy_api::get();
+  const py::dtype f8 = py::dtype::of<double>();
+  Py_intptr_t shape = static_cast<Py_intptr_t>(rows), stride = sizeof(double);
+  for (std::size_t c = 0; c < keys.size(); ++c) {
+    const auto array = py::reinterpret_steal<py::object>(
+        api.PyArray_NewFromDescr_(api.PyArray_Type_, f8.inc_ref().ptr(), 1, &shape, &stride, block + c * rows,
+                                  py::detail::npy_api::NPY_ARRAY_WRITEABLE_, nullptr));
+    if (!array) throw py::error_already_set();
+    if (api.PyArray_SetBaseObject_(array.ptr(), owner.inc_ref().ptr()) != 0) throw py::error_already_set();
+    if (PyDict_SetItem(out.ptr(), keys[c].ptr(), array.ptr()) != 0) throw py::error_already_set();
+  }
+}
+
+py::array status_array(const std::vector<rollkin::SolveStatus>& status) {
+  std::vector<std::u32string> name;  // by code, "" for a status not present
+  std::size_t width = 1;
+  for (const rollkin::SolveStatus s : status) {
+    const auto code = static_cast<std::size_t>(s);
+    if (code >= name.size()) name.resize(code + 1);
+    if (!name[code].empty()) continue;
+    for (const char* c = rollkin::to_string(s); *c; ++c) name[code] += static_cast<char32_t>(static_cast<unsigned char>(*c));
+    width = std::max(width, name[code].size());
+  }
+  for (std::u32string& n : name) n.resize(width, U'\0');
+  py::array out(py::dtype("<U" + std::to_string(width)), py::array::ShapeContainer{static_cast<py::ssize_t>(status.size())});
+  auto* chars = static_cast<char32_t*>(out.mutable_data());
+  for (const rollkin::SolveStatus s : status) {
+    std::memcpy(chars, name[static_cast<std::size_t>(s)].data(), width * sizeof(char32_t));
+    chars += width;
+  }
+  return out;
 }
 
 }  // namespace rollkin::python

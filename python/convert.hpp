@@ -1,8 +1,9 @@
-// Python values <-> the JSON of a scene document, and NumPy arrays of text, for the Python module `rollkin`
-// (python/convert.cpp): a dict given to rollkin.scene() or an override becomes the JSON the scene reader
-// reads, with its messages in the same form (JSON path of a bad value).
+// Python values <-> the JSON of a scene document, NumPy arrays of text and the sweep table as NumPy arrays, for
+// the Python module `rollkin` (python/convert.cpp): a dict given to rollkin.scene() or an override becomes the
+// JSON the scene reader reads, with its messages in the same form (JSON path of a bad value).
 #pragma once
 #include "io/json/access.hpp"  // child(), index(), kind_of() of the scene reader's messages (src/io)
+#include "rollkin/output/sweep_table.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -12,6 +13,7 @@
 #include <cstddef>
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -57,5 +59,34 @@ template <class Texts> py::array str_array(const Texts& texts) {
   }
   return out;
 }
+
+// ---- the sweep table as NumPy arrays (Scene.solve, solve_many) --------------------------------------------
+
+/// The column names of the tables as Python str, made once for every table with the same names (the
+/// variants of a batch): each name is encoded once per call, not once per table.
+class ColumnKeys {
+ public:
+  const std::vector<py::str>& of(const std::vector<std::string>& names) {
+    if (names != names_) {
+      names_ = names;
+      keys_.clear();
+      for (const std::string& n : names) keys_.emplace_back(n);
+    }
+    return keys_;
+  }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<py::str> keys_;
+};
+
+/// Every column of `t` as a float64 array over the table's block, as it is (no copy): one capsule owns the
+/// block and each array holds a reference to it, so the block lives while any of its arrays does. Made with
+/// NumPy's C API (PyArray_NewFromDescr, as pybind11's array does, without its shape and strides vectors).
+void add_columns(rollkin::io::SweepColumns& t, const std::vector<py::str>& keys, py::dict& out);
+
+/// The statuses as a NumPy array of str (dtype <U width of the longest present): each distinct status's
+/// name is encoded once and copied into the rows of the array's UCS-4 buffer.
+py::array status_array(const std::vector<rollkin::SolveStatus>& status);
 
 }  // namespace rollkin::python

@@ -117,68 +117,6 @@ void run_all(const std::shared_ptr<std::vector<Job>>& jobs, const Request& r, in
   });
 }
 
-/// The column names of the tables as Python str, made once for every table with the same names (the
-/// variants of a batch): each name is encoded once per call, not once per table.
-class ColumnKeys {
- public:
-  const std::vector<py::str>& of(const std::vector<std::string>& names) {
-    if (names != names_) {
-      names_ = names;
-      keys_.clear();
-      for (const std::string& n : names) keys_.emplace_back(n);
-    }
-    return keys_;
-  }
-
- private:
-  std::vector<std::string> names_;
-  std::vector<py::str> keys_;
-};
-
-/// Every column of `t` as a float64 array over the table's block, as it is (no copy): one capsule owns the
-/// block and each array holds a reference to it, so the block lives while any of its arrays does. Made with
-/// NumPy's C API (PyArray_NewFromDescr, as pybind11's array does, without its shape and strides vectors).
-void add_columns(rollkin::io::SweepColumns& t, const std::vector<py::str>& keys, py::dict& out) {
-  if (!t.values) return;  // no table (never built)
-  const std::size_t rows = t.rows();
-  double* const block = t.values.get();
-  const py::capsule owner(block, [](void* p) { delete[] static_cast<double*>(p); });
-  t.values.release();  // the capsule owns the block now
-  auto& api = py::detail::npy_api::get();
-  const py::dtype f8 = py::dtype::of<double>();
-  Py_intptr_t shape = static_cast<Py_intptr_t>(rows), stride = sizeof(double);
-  for (std::size_t c = 0; c < keys.size(); ++c) {
-    const auto array = py::reinterpret_steal<py::object>(
-        api.PyArray_NewFromDescr_(api.PyArray_Type_, f8.inc_ref().ptr(), 1, &shape, &stride, block + c * rows,
-                                  py::detail::npy_api::NPY_ARRAY_WRITEABLE_, nullptr));
-    if (!array) throw py::error_already_set();
-    if (api.PyArray_SetBaseObject_(array.ptr(), owner.inc_ref().ptr()) != 0) throw py::error_already_set();
-    if (PyDict_SetItem(out.ptr(), keys[c].ptr(), array.ptr()) != 0) throw py::error_already_set();
-  }
-}
-
-/// The statuses as a NumPy array of str (dtype <U width of the longest present): each distinct status's
-/// name is encoded once and copied into the rows of the array's UCS-4 buffer.
-py::array status_array(const std::vector<rollkin::SolveStatus>& status) {
-  std::vector<std::u32string> name;  // by code, "" for a status not present
-  std::size_t width = 1;
-  for (const rollkin::SolveStatus s : status) {
-    const auto code = static_cast<std::size_t>(s);
-    if (code >= name.size()) name.resize(code + 1);
-    if (!name[code].empty()) continue;
-    for (const char* c = rollkin::to_string(s); *c; ++c) name[code] += static_cast<char32_t>(static_cast<unsigned char>(*c));
-    width = std::max(width, name[code].size());
-  }
-  for (std::u32string& n : name) n.resize(width, U'\0');
-  py::array out(py::dtype("<U" + std::to_string(width)), py::array::ShapeContainer{static_cast<py::ssize_t>(status.size())});
-  auto* chars = static_cast<char32_t*>(out.mutable_data());
-  for (const rollkin::SolveStatus s : status) {
-    std::memcpy(chars, name[static_cast<std::size_t>(s)].data(), width * sizeof(char32_t));
-    chars += width;
-  }
-  return out;
-}
-
 /// A solved job as a dict: column name -> float64 array, "status" -> array of str; a scene that cannot be
 /// assembled also "error": the InputError message Scene.solve would raise for it. The columns' block moves
 /// into the arrays: the job's table has no values afterwards.
