@@ -168,12 +168,12 @@ template <class S> bool refuse_contact_off_contour(const Mechanism<S>& m, const 
   if (!off) return false;
   const Contour<S>& c = m.contours[off.contour];
   const bool angle = c.parameter_kind() == ParamKind::Angle;
-  const double value = to_double(q(off.variable));
+  const auto shown = [angle](const S& v) { return angle ? rad_to_deg(to_double(v)) : to_double(v); };  // deg for angles
   std::ostringstream os;
   os.precision(10);
   os << "the contact of pair '" << m.pairs[off.pair].name << "' lies at " << m.variables[off.variable].name << " = "
-     << (angle ? rad_to_deg(value) : value) << (angle ? " deg" : "") << ", beyond the end of contour '" << c.name()
-     << "', which is drawn for " << to_double(c.domain().lo) * unit << " .. " << to_double(c.domain().hi) * unit
+     << shown(q(off.variable)) << (angle ? " deg" : "") << ", beyond the end of contour '" << c.name()
+     << "', which is drawn for " << shown(c.domain().lo) << " .. " << shown(c.domain().hi)
      << (angle ? " deg" : "") << "; give the pair \"values\" on the drawn contour (or draw the contour where the"
      << " contact is)";
   rep.status = SolveStatus::CannotAssemble;
