@@ -32,6 +32,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -216,15 +217,13 @@ py::dict solve(const PyScene& s, const Request& r) {
 /// The files asked of write(): one keyword per format of output::sweep_formats(), in the table's order (a path
 /// or None); TypeError for a keyword that names no format.
 std::vector<rollkin::output::OutputRequest> file_requests(const py::kwargs& files) {
-  std::string known;
-  for (const auto& f : rollkin::output::sweep_formats()) known += std::string(known.empty() ? "" : ", ") + f.name;
   for (const auto& [key, value] : files) {
     const std::string name = py::str(key);
-    bool found = false;
-    for (const auto& f : rollkin::output::sweep_formats()) found = found || name == f.name;
-    if (!found)
-      throw py::type_error("write() got an unexpected keyword argument '" + name + "'; its file keywords are the output formats " +
-                           known);
+    try {
+      rollkin::output::sweep_format(name);
+    } catch (const std::invalid_argument& e) {
+      throw py::type_error("write() got an unexpected keyword argument '" + name + "': " + e.what());
+    }
   }
   std::vector<rollkin::output::OutputRequest> outputs;
   for (const auto& f : rollkin::output::sweep_formats()) {
@@ -464,9 +463,8 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
           for (const auto& f : rollkin::output::sweep_formats()) out.append(py::make_tuple(f.name, f.help));
           return out;
         },
-        "The output formats of a solved sweep, in the order of their table (include/rollkin/output/sweep_files.hpp):\n"
-        "(name, what the file holds) pairs. Each name is a keyword of Scene.write and an option --name of\n"
-        "`rollkin solve`.");
+        "The output formats of a solved sweep (include/rollkin/output/sweep_files.hpp) as (name, what the file holds)\n"
+        "pairs: each name is a keyword of Scene.write and an option --name of `rollkin solve`.");
   m.def("solve_many",
         [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
            std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {
