@@ -89,7 +89,7 @@ check "--draw onto the drawing itself: refused (exit 2), the drawing unchanged" 
 "$BIN" contours notes.odt >out.txt 2>err.txt
 rc=$?
 check "a file of no contour format: exit 2, says what is expected" \
-  $([ "$rc" -eq 2 ] && grep -q "expected a file ending in .dxf, .svg, .txt or .csv" err.txt; echo $?)
+  $([ "$rc" -eq 2 ] && grep -q "expected a file ending in .txt, .csv, .svg or .dxf" err.txt; echo $?)
 printf '<svg xmlns="http://www.w3.org/2000/svg"><use id="a" href="#b"/><use id="b" href="#a"/></svg>\n' >cycle.svg
 "$BIN" contours cycle.svg >out.txt 2>err.txt
 rc=$?

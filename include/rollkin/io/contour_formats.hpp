@@ -20,7 +20,7 @@ using ContourLister = std::vector<ListedChain> (*)(const std::string& path);
 struct ContourFileFormat {
   const char* name = nullptr;           // "DXF drawing"
   std::vector<std::string> extensions;  // lower case, with the dot: ".dxf" (a file is matched ignoring case)
-  const char* description = nullptr;    // what is listed of such a file, one line
+  const char* description = nullptr;    // what is listed of such a file, one short line (help texts)
   ContourLister list = nullptr;
   const char* type = nullptr;           // the scene's contour "type" that reads it (docs/scene_format.md)
 };
