@@ -3,6 +3,7 @@
 // drawing's contours (contours(), as `rollkin contours --json`).
 #include "bindings.hpp"
 
+#include "rollkin/io/contour_formats.hpp"
 #include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/json/document.hpp"
 
@@ -146,7 +147,7 @@ py::object sweep_dict(const PyScene& s) {
   return std::move(d);
 }
 
-/// The chains of a DXF or SVG drawing as dicts with the fields of `rollkin contours --json`.
+/// The chains of a contour file (io/contour_formats.hpp) as dicts with the fields of `rollkin contours --json`.
 py::list contours(const py::object& path) {
   const std::string file = path_argument(path, "path");
   const std::vector<rollkin::io::ListedChain> chains = interruptible<std::vector<rollkin::io::ListedChain>>(
@@ -167,6 +168,19 @@ py::list contours(const py::object& path) {
     out.append(d);
   }
   return out;
+}
+
+/// contours()'s docstring, its formats from the table of contour file formats (io/contour_formats.hpp).
+const char* contours_doc() {
+  static const std::string doc =
+      "What a drawing or point file offers as contours, as `rollkin contours FILE --json` lists it: one dict per\n"
+      "chain with group (DXF layer, SVG element, file), entities, closed, length, min and max (bounding box\n"
+      "corners), corners (tangent discontinuities) and selector (the contour dict that selects exactly this chain:\n"
+      "add a \"name\" and put it in a scene's contours). The file's units; SVG: viewport units with y up.\n"
+      "The formats, by extension (case ignored):\n" +
+      rollkin::io::contour_file_formats_help() + "Raises InputError for a file that cannot be read or ends in none of " +
+      rollkin::io::contour_file_extensions() + ".\n    for c in rollkin.contours(\"plate.svg\"): print(c[\"length\"], c[\"selector\"])";
+  return doc.c_str();
 }
 
 }  // namespace
@@ -198,13 +212,7 @@ void bind_scenes(py::module_& m, py::class_<PyScene>& scene) {
         "resolved against base_dir (default: the current directory); `name` names the scene in messages (default\n"
         "\"<dict>\") and, as the scene's file, is never written over by write() or centrodes(dxf=).\n"
         "Raises InputError naming the JSON path of a bad value (NaN and infinities are not JSON numbers).");
-  m.def("contours", &contours, py::arg("path"),
-        "What a DXF or SVG drawing offers as contours, as `rollkin contours FILE --json` lists it: one dict per chain\n"
-        "with group (DXF layer, SVG element), entities, closed, length, min and max (bounding box corners), corners\n"
-        "(tangent discontinuities) and selector (the contour dict that selects exactly this chain: add a \"name\"\n"
-        "and put it in a scene's contours). Drawing units; SVG: viewport units with y up. Raises InputError for a\n"
-        "file that cannot be read or is neither .dxf nor .svg.\n"
-        "    for c in rollkin.contours(\"plate.svg\"): print(c[\"length\"], c[\"selector\"])");
+  m.def("contours", &contours, py::arg("path"), contours_doc());
   m.def("samples", &samples, py::arg("xy"), py::arg("name") = "samples",
         "A sampled contour (type \"samples\", docs/scene_format.md) from an (n, 2) array of x, y rows, as the dict\n"
         "a scene's contour list takes; keyword arguments add the contour's other keys (closed, smoothing, scale,\n"

@@ -32,6 +32,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -151,12 +152,29 @@ py::dict solve(const PyScene& s, const Request& r) {
 
 // ---- files -----------------------------------------------------------------------------------------------
 
-/// Checks every requested path (format keyword, path or None: output::sweep_formats()) before solving,
-/// solves, and writes every file or none, as `rollkin solve` does.
-py::dict write(const PyScene& s, const Request& r, const std::vector<std::pair<std::string, py::object>>& files) {
+/// The files asked of write(): one keyword per format of output::sweep_formats(), in the table's order (a path
+/// or None); TypeError for a keyword that names no format.
+std::vector<rollkin::output::OutputRequest> file_requests(const py::kwargs& files) {
+  for (const auto& [key, value] : files) {
+    const std::string name = py::str(key);
+    try {
+      rollkin::output::sweep_format(name);
+    } catch (const std::invalid_argument& e) {
+      throw py::type_error("write() got an unexpected keyword argument '" + name + "': " + e.what());
+    }
+  }
   std::vector<rollkin::output::OutputRequest> outputs;
-  for (const auto& [format, path] : files)
-    if (!path.is_none()) outputs.push_back({format, path_argument(path, format.c_str()), format});
+  for (const auto& f : rollkin::output::sweep_formats()) {
+    if (!files.contains(f.name)) continue;
+    const py::object path = files[f.name];
+    if (!path.is_none()) outputs.push_back({f.name, path_argument(path, f.name), f.name});
+  }
+  return outputs;
+}
+
+/// Checks every requested path (file_requests) before solving, solves, and writes every file or none, as
+/// `rollkin solve` does.
+py::dict write(const PyScene& s, const Request& r, const std::vector<rollkin::output::OutputRequest>& outputs) {
   Job job = solved(start_run(s, r, outputs), r, true);
   job.run.write(job.run.output(*job.result, r.analysis), rollkin::output::WriteOptions{r.rates, 1});
   ColumnKeys keys;
@@ -309,13 +327,22 @@ assembled does not stop the batch: its dict has NaN values and the status "canno
 and "error": the InputError message Scene.solve would raise for it. The GIL is released while solving; Ctrl-C
 cancels the workers between poses and raises KeyboardInterrupt within a second.)";
 
-const char* const kWriteDoc = R"(Solves like solve() and writes the CLI's output files from the result.
+/// write()'s docstring: one line per output format, from the table (output::sweep_formats()).
+const char* write_doc() {
+  static const std::string doc = [] {
+    std::string text = R"(Solves like solve() and writes the CLI's output files from the result.
 
-csv, plot, draw, animate: paths (None: not written) of the files `rollkin solve --csv --plot --draw --animate`
-writes: the table, the charts (with analysis=True also the analysis charts), the drawing of the mechanism and
-the self-contained HTML animation. Every path is checked before solving; a path that is one of the scene's
-input files, a missing directory or a directory raises OutputError (an OSError) and nothing is written. The
-files are written all or nothing, each through a temporary in its own directory. Returns the table as solve().)";
+One keyword per output format of `rollkin solve` (the same table gives the CLI its options), each a path or None
+(not written):
+)";
+    for (const auto& f : rollkin::output::sweep_formats()) text += std::string("  ") + f.name + ": " + f.help + "\n";
+    return text + R"(Every path is checked before solving; a path that is one of the scene's input files, a missing
+directory or a directory raises OutputError (an OSError) and nothing is written; a keyword that names no format
+raises TypeError. The files are written all or nothing, each through a temporary in its own directory. Returns
+the table as solve().)";
+  }();
+  return doc.c_str();
+}
 
 const char* const kCentrodesDoc = R"(The centrodes of link_b's motion relative to link_a over the sweep.
 
@@ -346,15 +373,12 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
            py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveDoc)
       .def("write",
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
-              const py::object& csv, const py::object& plot, const py::object& draw, const py::object& animate,
-              bool analysis, bool rates, double max_steps) {
-             return write(s, request(start, stop, step, analysis, rates, max_steps),
-                          {{"csv", csv}, {"plot", plot}, {"draw", draw}, {"animate", animate}});
+              bool analysis, bool rates, double max_steps, const py::kwargs& files) {
+             return write(s, request(start, stop, step, analysis, rates, max_steps), file_requests(files));
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
-           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("draw") = py::none(),
-           py::arg("animate") = py::none(), py::arg("analysis") = false, py::arg("rates") = false,
-           py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kWriteDoc)
+           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps,
+           write_doc())
       .def("centrodes",
            [](const PyScene& s, const std::string& a, const std::string& b, std::optional<double> start,
               std::optional<double> stop, std::optional<double> step, const py::object& dxf, double max_steps) {
@@ -371,6 +395,14 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("digits") = 50, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kReferenceDoc);
 
+  m.def("output_formats",
+        [] {
+          py::list out;
+          for (const auto& f : rollkin::output::sweep_formats()) out.append(py::make_tuple(f.name, f.help));
+          return out;
+        },
+        "The output formats of a solved sweep (include/rollkin/output/sweep_files.hpp) as (name, what the file holds)\n"
+        "pairs: each name is a keyword of Scene.write and an option --name of `rollkin solve`.");
   m.def("solve_many",
         [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
            std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {

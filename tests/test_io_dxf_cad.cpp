@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(listed_chains_are_selected_by_their_selectors) {
         ++selectable;
         const nlohmann::json j = nlohmann::json::parse(l.selector);
         BOOST_TEST(j.at("type") == "dxf");
-        BOOST_TEST(j.at("file") == name);
+        BOOST_TEST(j.at("file") == file);  // the path as given
         DxfSelection sel;
         if (j.contains("layer")) sel.layer = j.at("layer").get<std::string>();
         if (j.contains("near")) sel.near = V(j.at("near")[0].get<double>(), j.at("near")[1].get<double>()), ++near_selectors;

@@ -32,9 +32,17 @@ template <class S> class MechanismBuilder {
   /// Cam (slipping) or rolling contact between two contours, from contour A's link to contour B's link.
   int contact(const std::string& name, bool rolling, int contour_a, int contour_b, const std::string& var_a = "u",
               const std::string& var_b = "v") {
+    return contact(name, rolling ? PairKind::Rolling : PairKind::Cam, contour_a, contour_b, var_a, var_b);
+  }
+  /// A pair of a kind with contours (PairTraits::has_contours) between two contours, from contour A's link to
+  /// contour B's link. std::invalid_argument for a kind without contours.
+  int contact(const std::string& name, PairKind kind, int contour_a, int contour_b, const std::string& var_a,
+              const std::string& var_b) {
+    if (!traits(kind).has_contours)
+      throw std::invalid_argument(std::string("MechanismBuilder::contact: a ") + to_string(kind) + " pair has no contours");
     Pair<S> p;
     p.name = name;
-    p.kind = rolling ? PairKind::Rolling : PairKind::Cam;
+    p.kind = kind;
     p.contour_a = contour_a;
     p.contour_b = contour_b;
     p.link_a = m_.contours.at(contour_a).link();
@@ -63,8 +71,11 @@ template <class S> class MechanismBuilder {
     return m;
   }
 
- private:
+  /// A pair of a kind with joint frames (PairTraits::has_joint_frames) from link a to link b, placed at
+  /// frame_a in a and frame_b in b. std::invalid_argument for a kind without joint frames.
   int joint(const std::string& name, PairKind kind, int a, int b, const SE2<S>& fa, const SE2<S>& fb, const std::string& var) {
+    if (!traits(kind).has_joint_frames)
+      throw std::invalid_argument(std::string("MechanismBuilder::joint: a ") + to_string(kind) + " pair has no joint frames");
     Pair<S> p;
     p.name = name;
     p.kind = kind;
@@ -77,6 +88,7 @@ template <class S> class MechanismBuilder {
     return static_cast<int>(m_.pairs.size()) - 1;
   }
 
+ private:
   Mechanism<S> m_;
 };
 

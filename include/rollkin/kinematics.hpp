@@ -361,8 +361,7 @@ template <class S> S angle_of(const S& a, const SE2<S>& r) {
 /// from its evaluation, or never evaluated, is evaluated at q (pair_transform). Where q_e = q the numbers
 /// are link_poses_at's, to the last bit.
 /// With `angle`, also each link's angle in [-pi, pi] (atan2's range), summed down the tree rather than taken
-/// from the rotation (one atan2 per link): a revolute edge turns by angle(F_A) + q - angle(F_B), a prismatic one by
-/// angle(F_A) - angle(F_B), a contact edge by the angle of its transform.
+/// from the rotation (one atan2 per link): each edge turns by pair_turn (pair.hpp).
 template <class S> void link_poses_near(const Mechanism<S>& m, const KinematicsData<S>& d, const VectorX<S>& q,
                                         SE2<S>* pose, S* angle = nullptr) {
   using std::abs;
@@ -378,7 +377,7 @@ template <class S> void link_poses_near(const Mechanism<S>& m, const KinematicsD
     bool moved = false, far = false;
     for (int j = 0; j < pair.variable_count(); ++j) {
       const int var = pair.first_variable + j;
-      const S dq = q(var) - st.evaluated_value(pair.kind, j);
+      const S dq = q(var) - st.evaluated_value(pair.traits(), j);
       if (!(abs(dq) <= near * m.variable_scale(var))) {
         far = true;  // (NaN included: never evaluated)
       } else if (dq != S(0)) {
@@ -392,9 +391,7 @@ template <class S> void link_poses_near(const Mechanism<S>& m, const KinematicsD
     const int parent = m.tree[i].parent;
     pose[i] = pose[parent] * (e.forward ? E : E.inverse());
     if (angle) {
-      const S turn = pair.kind == PairKind::Revolute    ? S(pair.frame_a.angle() + q(pair.first_variable) - pair.frame_b.angle())
-                     : pair.kind == PairKind::Prismatic ? S(pair.frame_a.angle() - pair.frame_b.angle())
-                                                        : E.angle();
+      const S turn = pair_turn(pair, q.data() + pair.first_variable, E);
       angle[i] = angle[parent] + (e.forward ? turn : S(-turn));
     }
   }

@@ -117,13 +117,13 @@ template <class S> void Mechanism<S>::number_variables() {
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     Pair<S>& p = pairs[k];
     p.first_variable = static_cast<int>(variables.size());
+    const PairTraits& t = p.traits();
     for (int j = 0; j < p.variable_count(); ++j) {
-      ParamKind kind = ParamKind::Angle;
-      if (p.kind == PairKind::Prismatic) kind = ParamKind::Length;
-      if (is_contact(p.kind)) kind = contours[j == 0 ? p.contour_a : p.contour_b].parameter_kind();
+      const ParamKind kind = t.has_contours ? contours[j == 0 ? p.contour_a : p.contour_b].parameter_kind()
+                                            : t.joint_variable_kind();
       variables.push_back(Variable{p.name + "." + p.variables[j], kind, static_cast<int>(k)});
     }
-    if (p.kind == PairKind::Rolling) rolling_pairs.push_back(static_cast<int>(k));
+    if (t.constrains_sliding) rolling_pairs.push_back(static_cast<int>(k));
     p.frame_a_identity = p.frame_a.is_identity();
     p.frame_b_identity = p.frame_b.is_identity();
   }

@@ -1,8 +1,9 @@
-// `rollkin contours FILE.dxf|FILE.svg [--draw OUT.svg] [--json]`: what a drawing offers as contours
-// (io/contour_listing.hpp): per chain its group (DXF layer, SVG element), entities, closed or open, length,
-// bounding box, corners and the contour object that selects it in a scene (docs/cli.md, "rollkin contours").
+// `rollkin contours FILE [--draw OUT.svg] [--json]`: what a drawing or point file offers as contours, by its
+// format (io/contour_formats.hpp, io/contour_listing.hpp): per chain its group (DXF layer, SVG element, file),
+// entities, closed or open, length, bounding box, corners and the contour object that selects it in a scene.
 #include "commands.hpp"
 
+#include "rollkin/io/contour_formats.hpp"
 #include "rollkin/io/contour_listing.hpp"
 #include "rollkin/output/contour_picture.hpp"
 
@@ -25,20 +26,20 @@ int run_contours(const ContoursOptions& o);
 
 Command contours_command(CLI::App& rollkin) {
   auto o = std::make_shared<ContoursOptions>();
-  CLI::App* app = rollkin.add_subcommand("contours", "list the contours a DXF or SVG drawing offers, with the scene "
+  CLI::App* app = rollkin.add_subcommand("contours", "list the contours a drawing or point file offers, with the scene "
                                                      "snippet that selects each");
-  app->add_option("FILE", o->file, "the drawing: a .dxf or .svg file")->required()->type_name("");
+  app->add_option("FILE", o->file, "the file: a " + io::contour_file_extensions() + " file")->required()->type_name("");
   add_output(*app, "--draw", o->draw, "write an SVG picture of the drawing with every chain numbered as listed");
   app->add_flag("--json", o->json, "print the list as a JSON array instead of text");
+  // The formats and what is listed of each come from the table of contour file formats (io/contour_formats.hpp).
   app->footer(
-      "Lists every chain of the drawing: DXF, per layer, the chains the entities form end to end; SVG, every\n"
-      "subpath of every drawn element (<use> clones, <symbol>, <switch> expanded). Per chain: its group (layer or\n"
-      "element), entities, closed or open, length, bounding box and corners in drawing units (SVG: viewport units,\n"
-      "y up, as a scene without units.length reads them), and the contour object that selects exactly it: paste\n"
-      "it into a scene's \"contours\" with a \"name\" (its \"file\" is the path given here: make it relative to\n"
-      "the scene's directory).\n"
-      "Exit status: 0 listed; 2 bad input (a drawing that cannot be read: the message names the file, the\n"
-      "element or entity and what to change) or command line, nothing written; 3 out of memory.");
+      "Lists every chain of the file, by its format (the extension, case ignored):\n" + io::contour_file_formats_help() +
+      "Per chain: its group (layer, element or file), entities, closed or open, length, bounding box and corners\n"
+      "in the file's units (SVG: viewport units, y up, as a scene without units.length reads them), and the contour\n"
+      "object that selects exactly it: paste it into a scene's \"contours\" with a \"name\" (its \"file\" is the\n"
+      "path given here: make it relative to the scene's directory). README.md, \"rollkin contours\".\n"
+      "Exit status: 0 listed; 2 bad input (a file that cannot be read: the message names the file, the element,\n"
+      "entity or line and what to change) or command line, nothing written; 3 out of memory.");
   return {app, [o] { return run_contours(*o); }};
 }
 

@@ -42,7 +42,7 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
   KinematicsData<double> kin(m);
   evaluate_pairs<double>(m, q, nullptr, 2, kin);
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
-    if (!is_contact(m.pairs[k].kind)) continue;
+    if (!m.pairs[k].traits().has_contours) continue;
     const double ka = kin.pairs[k].contact[0].curvature(), kb = kin.pairs[k].contact[1].curvature();
     const double size = std::max(std::abs(ka), std::abs(kb));
     if (size > 0 && std::abs(ka + kb) <= 1e-6 * size)

@@ -5,7 +5,7 @@
 //   rollkin reference SCENE [--from V --to V --step V] [--digits 30|50|100] [--max-steps N] --csv FILE
 //   rollkin centrodes SCENE --links A B [--from V --to V --step V] [--max-steps N] --out PREFIX
 //   rollkin check SCENE [--from V --to V --step V] [--max-steps N]
-//   rollkin contours FILE.dxf|FILE.svg [--draw OUT.svg] [--json]
+//   rollkin contours FILE [--draw OUT.svg] [--json]          (FILE: a format of io/contour_formats.hpp)
 //   rollkin synthesize cam SPEC.json --out PREFIX
 //   rollkin --help | --version;  rollkin COMMAND --help
 //

@@ -97,8 +97,8 @@ std::string centrode_single_point(const SweepOutput& ctx, const std::vector<Inst
   if (!first) return "";
   std::string joint = "link '" + m.links[b].name + "' turns about one point of link '" + m.links[a].name + "'";
   for (const Pair<double>& p : m.pairs)
-    if (p.kind == PairKind::Revolute && ((p.link_a == a && p.link_b == b) || (p.link_a == b && p.link_b == a)))
-      joint = "the links are joined by the revolute '" + p.name + "'";
+    if (p.traits().turns && ((p.link_a == a && p.link_b == b) || (p.link_a == b && p.link_b == a)))
+      joint = std::string("the links are joined by the ") + p.traits().name + " '" + p.name + "'";
   auto point = [&](const Vec2<double>& x, int link) {  // a coordinate within round-off of zero is shown as 0
     auto coordinate = [&](double v) { return io::format_double(same_centre(x, x - Vec2<double>(v, 0), m.length_scale) ? 0.0 : v); };
     return "(" + coordinate(x.x()) + ", " + coordinate(x.y()) + ") in link '" + m.links[link].name + "''s frame";

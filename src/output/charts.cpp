@@ -146,12 +146,13 @@ std::vector<io::SvgChart> analysis_charts(const SweepOutput& ctx, const InputAxi
   const double in_scale = out_scale(m, ctx.sweep.variable);
   const std::string per_input = ctx.scene.unit_label(ctx.sweep.variable);
   const std::string& len = ctx.scene.length_unit;
-  // Sliding is zero by construction at rolling pairs (docs/analysis.md): charted for cam pairs only.
+  // Sliding is zero by construction at rolling pairs (docs/analysis.md): charted for the contacts that slip
+  // (PairTraits::constrains_sliding false: the cam pairs).
   std::vector<std::string> pairs, cams, curvatures, links;
   std::vector<std::size_t> cam_contact;
   std::vector<int> moving;
   for (int k : contact_pairs(m)) {
-    if (m.pairs[k].kind == PairKind::Cam) {
+    if (!m.pairs[k].traits().constrains_sliding) {
       cams.push_back(m.pairs[k].name);
       cam_contact.push_back(pairs.size());
     }
@@ -171,7 +172,7 @@ std::vector<io::SvgChart> analysis_charts(const SweepOutput& ctx, const InputAxi
   std::vector<int> stroke_variable;
   for (int i : m.unknowns)
     for (const Pair<double>& p : m.pairs)
-      if (p.kind == PairKind::Prismatic && p.first_variable == i) {
+      if (p.traits().slides && p.first_variable == i) {
         strokes.push_back(m.variables[i].name);
         stroke_variable.push_back(i);
       }

@@ -38,7 +38,7 @@ std::vector<LinkSketch> link_sketches(const Mechanism<double>& m) {
     if (static_cast<int>(l) == m.ground) continue;
     std::vector<Eigen::Vector2d> anchors;
     for (const auto& p : m.pairs) {
-      if (is_contact(p.kind)) continue;
+      if (!p.traits().has_joint_frames) continue;
       if (p.link_a == static_cast<int>(l)) anchors.push_back(p.frame_a.translation());
       if (p.link_b == static_cast<int>(l)) anchors.push_back(p.frame_b.translation());
     }
@@ -47,7 +47,7 @@ std::vector<LinkSketch> link_sketches(const Mechanism<double>& m) {
     if (anchors.size() >= 2) s[l].body = std::move(anchors);
   }
   for (const auto& p : m.pairs) {
-    if (is_contact(p.kind)) continue;
+    if (!p.traits().has_joint_frames) continue;
     if (p.link_a != m.ground && p.link_b != m.ground) {
       s[static_cast<std::size_t>(p.link_a)].joints.push_back(p.frame_a.translation());
     } else {

@@ -184,7 +184,7 @@ double output_scale(const Mechanism<double>& m, int var) {
 std::vector<int> contact_pairs(const Mechanism<double>& m) {
   std::vector<int> k;
   for (std::size_t p = 0; p < m.pairs.size(); ++p)
-    if (is_contact(m.pairs[p].kind)) k.push_back(static_cast<int>(p));
+    if (m.pairs[p].traits().has_contours) k.push_back(static_cast<int>(p));
   return k;
 }
 

@@ -86,10 +86,10 @@ before=$(cksum <clones.svg)
 rc=$?
 check "--draw onto the drawing itself: refused (exit 2), the drawing unchanged" \
   $([ "$rc" -eq 2 ] && grep -q "inputs are never overwritten" err.txt && [ "$(cksum <clones.svg)" = "$before" ]; echo $?)
-"$BIN" contours notes.txt >out.txt 2>err.txt
+"$BIN" contours notes.odt >out.txt 2>err.txt
 rc=$?
-check "a file that is not .dxf or .svg: exit 2, says what is expected" \
-  $([ "$rc" -eq 2 ] && grep -q "expected a drawing ending in .dxf or .svg" err.txt; echo $?)
+check "a file of no contour format: exit 2, says what is expected" \
+  $([ "$rc" -eq 2 ] && grep -q "expected a file ending in .txt, .csv, .svg or .dxf" err.txt; echo $?)
 printf '<svg xmlns="http://www.w3.org/2000/svg"><use id="a" href="#b"/><use id="b" href="#a"/></svg>\n' >cycle.svg
 "$BIN" contours cycle.svg >out.txt 2>err.txt
 rc=$?

@@ -84,9 +84,9 @@ def test_a_listed_selector_builds_a_scene(tmp_path):
 
 
 def test_contours_errors(tmp_path):
-    (tmp_path / "notes.txt").write_text("x")
-    with pytest.raises(rollkin.InputError, match="expected a drawing ending in .dxf or .svg"):
-        rollkin.contours(tmp_path / "notes.txt")
+    (tmp_path / "notes.odt").write_text("x")
+    with pytest.raises(rollkin.InputError, match="expected a file ending in .txt, .csv, .svg or .dxf"):
+        rollkin.contours(tmp_path / "notes.odt")
     (tmp_path / "cycle.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"><use id="a" href="#b"/>'
                                         '<use id="b" href="#a"/></svg>')
     with pytest.raises(rollkin.InputError, match="is part of a <use> cycle"):

@@ -628,6 +628,28 @@ def test_write_gives_the_clis_files_and_never_writes_over_an_input(tmp_path):
     assert not (tmp_path / "new.csv").exists()
 
 
+def test_every_output_format_of_the_table_is_a_write_keyword(tmp_path):
+    """Scene.write's file keywords come from the table of output formats (output::sweep_formats()): each one
+    alone writes the file the CLI's option of that name writes, and nothing else; its docstring lists it."""
+    formats = rollkin.output_formats()
+    assert {"csv", "plot", "draw", "animate"} <= {name for name, _ in formats}
+    scene = rollkin.load_scene(PAPER)
+    for name, what in formats:
+        assert "  %s: %s" % (name, what) in scene.write.__doc__
+        out = tmp_path / name
+        out.mkdir()
+        scene.write(-50, 100, 25, **{name: str(out / "py")})
+        assert os.listdir(out) == ["py"], name
+        proc = subprocess.run([CLI, "solve", str(PAPER), "--from", "-50", "--to", "100", "--step", "25",
+                               "--" + name, str(out / "cli")], capture_output=True, text=True)
+        assert proc.returncode == 0, proc.stderr
+        assert (out / "py").read_bytes() == (out / "cli").read_bytes(), name
+    known = ", ".join(name for name, _ in formats)
+    with pytest.raises(TypeError, match="'cvs'.*" + re.escape(known)):
+        scene.write(cvs=str(tmp_path / "typo.csv"))
+    assert not (tmp_path / "typo.csv").exists()
+
+
 def test_centrodes_of_the_anti_parallelogram_are_the_ellipses_and_the_clis_dxf(tmp_path):
     scene = rollkin.load_scene(SRC / "examples" / "antiparallelogram.json")
     c = scene.centrodes("crank", "follower", 0, 360, 0.5, dxf=str(tmp_path / "py.dxf"))

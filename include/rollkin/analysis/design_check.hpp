@@ -358,7 +358,7 @@ template <class S> DesignCheck<S> check_design(const Mechanism<S>& m, const Swee
                                                const DesignCheckOptions& opt = {}) {
   DesignCheck<S> out;
   for (std::size_t k = 0; k < m.pairs.size(); ++k)
-    if (is_contact(m.pairs[k].kind)) out.pairs.push_back(detail::check_pair(m, static_cast<int>(k), sweep, opt));
+    if (m.pairs[k].traits().has_contours) out.pairs.push_back(detail::check_pair(m, static_cast<int>(k), sweep, opt));
   return out;
 }
 

@@ -174,7 +174,7 @@ template <class S> std::vector<InterferenceFinding> check_pose_interference(
     int own_pair = -1;
     for (std::size_t k = 0; k < m.pairs.size(); ++k) {
       const Pair<S>& p = m.pairs[k];
-      if (!is_contact(p.kind)) continue;
+      if (!p.traits().has_contours) continue;
       const S& u = q(p.first_variable);
       const S& v = q(p.first_variable + 1);
       if (p.contour_a == ca && p.contour_b == cb)
@@ -205,7 +205,7 @@ template <class S> std::vector<InterferenceFinding> check_pose_interference(
   if (opt.check_contact_curvature) {
     for (std::size_t k = 0; k < m.pairs.size(); ++k) {
       const Pair<S>& p = m.pairs[k];
-      if (!is_contact(p.kind)) continue;
+      if (!p.traits().has_contours) continue;
       const PairState<S>& st = d.pairs[k];
       const double sum = to_double(S(st.contact[0].curvature() + st.contact[1].curvature()));
       if (sum >= -opt.curvature_tolerance) continue;

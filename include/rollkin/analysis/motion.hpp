@@ -232,7 +232,7 @@ template <class S> PoseAnalysis<S> analyse_pose(const Mechanism<S>& m, const std
   detail::link_motion(m, sd.kin, qdot, out.qddot, out);
   jerk(m, q, qdot, data, out);
   for (std::size_t k = 0; k < m.pairs.size(); ++k)
-    if (is_contact(m.pairs[k].kind))
+    if (m.pairs[k].traits().has_contours)
       out.contacts.push_back(detail::contact_analysis(m, static_cast<int>(k), sd.kin.pairs[k], qdot, out));
   return out;
 }

@@ -1,6 +1,7 @@
-// What a CAD drawing offers as contours (`rollkin contours FILE.dxf|FILE.svg`, Python `rollkin.contours`):
-// every chain its entities form (DXF: per layer, order-free chaining by end points; SVG: per element and
-// subpath), each with what a user needs to pick it and the scene snippet that selects it.
+// What a CAD drawing or point file offers as contours (`rollkin contours FILE`, Python `rollkin.contours`):
+// every chain it holds (DXF: per layer, order-free chaining by end points; SVG: per element and subpath; a
+// point file: its one spline), each with what a user needs to pick it and the scene snippet that selects it.
+// The formats and their listers: io/contour_formats.hpp.
 //
 //   for (const io::ListedChain& c : io::list_contours("gear.dxf")) std::cout << c.selector << "\n";
 #pragma once
@@ -28,7 +29,8 @@ struct ListedChain {
 std::vector<ListedChain> list_dxf_contours(const std::string& path);
 /// Every subpath of every drawable element of the SVG document at `path`, in document order.
 std::vector<ListedChain> list_svg_contours(const std::string& path);
-/// By the file's extension (.dxf or .svg, case-insensitive); InputError for any other.
+/// By the file's format (io::contour_file_format_of: its extension, case-insensitive); InputError for a file of
+/// no format.
 std::vector<ListedChain> list_contours(const std::string& path);
 
 }  // namespace rollkin::io

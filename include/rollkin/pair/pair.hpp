@@ -16,6 +16,7 @@
 // contact point at rate (kappa_A + kappa_B) ds (docs/method.md section 5, rate relation).
 #pragma once
 
+#include "rollkin/pair/pair_kind.hpp"
 #include "rollkin/profile/profile.hpp"
 
 #include <array>
@@ -24,20 +25,6 @@
 #include <string>
 
 namespace rollkin {
-
-enum class PairKind { Revolute, Prismatic, Cam, Rolling };
-
-inline const char* to_string(PairKind k) {
-  switch (k) {
-    case PairKind::Revolute: return "revolute";
-    case PairKind::Prismatic: return "prismatic";
-    case PairKind::Cam: return "cam";
-    case PairKind::Rolling: return "rolling";
-  }
-  return "?";
-}
-inline bool is_contact(PairKind k) { return k == PairKind::Cam || k == PairKind::Rolling; }
-inline int variable_count(PairKind k) { return is_contact(k) ? 2 : 1; }
 
 /// Description of one pair: which links it joins, where, and its variables' names.
 template <class S> struct Pair {
@@ -52,7 +39,9 @@ template <class S> struct Pair {
   // with it. False (always compose) until then, so a pair evaluated on its own stays correct.
   bool frame_a_identity = false, frame_b_identity = false;
 
-  int variable_count() const { return rollkin::variable_count(kind); }
+  /// What the pair does (pair_kind.hpp): consumers ask this, never the kind.
+  const PairTraits& traits() const { return rollkin::traits(kind); }
+  int variable_count() const { return traits().variable_count; }
   template <class T> Pair<T> cast() const {
     Pair<T> p;
     p.name = name;
@@ -87,7 +76,7 @@ template <class S> struct PairState {
   std::array<S, 2> contact_value{std::numeric_limits<S>::quiet_NaN(), std::numeric_limits<S>::quiet_NaN()};
 
   /// The value of the pair's variable j (0, or 1 for a contact pair) this state was evaluated at.
-  const S& evaluated_value(PairKind kind, int j) const { return is_contact(kind) ? contact_value[j] : joint_value; }
+  const S& evaluated_value(const PairTraits& t, int j) const { return t.has_contours ? contact_value[j] : joint_value; }
 };
 
 /// The edge transform F_A P F_B^-1 of a joint pair. Identity joint frames (flagged by finalize()) are
@@ -110,7 +99,7 @@ template <class S> SE2<S> contact_transform(const ContourPoint<S>& a, const Cont
 /// Differential order needed from the contours: 1 for positions and velocities, 3 for accelerations.
 template <class S> void evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours, const S* q,
                                       const std::common_type_t<S>* qdot, int order, PairState<S>& st) {
-  if (!is_contact(pair.kind) && q[0] == st.joint_value) return;
+  if (!pair.traits().has_contours && q[0] == st.joint_value) return;
   st.twist_rate[0].setZero();
   st.twist_rate[1].setZero();
   switch (pair.kind) {
@@ -161,6 +150,19 @@ template <class S> SE2<S> pair_transform(const Pair<S>& pair, const std::vector<
   // The contact points as evaluate_pair computes them (order 2), so that the transforms are the same numbers.
   return contact_transform(contour_point(contours[pair.contour_a].jet(q[0], 2), 2),
                            contour_point(contours[pair.contour_b].jet(q[1], 2), 2));
+}
+
+/// The angle by which the edge transform E (at variables q) turns link B's frame relative to link A's, summed
+/// from the joint frames without atan2 where the kind knows it: a revolute edge turns by angle(F_A) + q -
+/// angle(F_B), a prismatic one by angle(F_A) - angle(F_B), a contact edge by the angle of E.
+template <class S> S pair_turn(const Pair<S>& pair, const S* q, const SE2<S>& E) {
+  switch (pair.kind) {
+    case PairKind::Revolute: return pair.frame_a.angle() + q[0] - pair.frame_b.angle();
+    case PairKind::Prismatic: return pair.frame_a.angle() - pair.frame_b.angle();
+    case PairKind::Cam:
+    case PairKind::Rolling: break;
+  }
+  return E.angle();
 }
 
 template <class S> PairState<S> evaluate_pair(const Pair<S>& pair, const std::vector<Contour<S>>& contours,

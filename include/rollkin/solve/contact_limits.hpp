@@ -29,7 +29,7 @@ struct ContactOffContour {
 template <class S> ContactOffContour contact_off_contour(const Mechanism<S>& m, const VectorX<S>& q) {
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
     const Pair<S>& p = m.pairs[k];
-    if (!is_contact(p.kind)) continue;
+    if (!p.traits().has_contours) continue;
     for (int j = 0; j < 2; ++j) {
       const int c = j == 0 ? p.contour_a : p.contour_b;
       if (!m.contours[c].domain().contains(q(p.first_variable + j))) return {p.first_variable + j, static_cast<int>(k), c};
@@ -44,7 +44,7 @@ template <class S> class ContactLimits {
  public:
   explicit ContactLimits(const Mechanism<S>& m) {
     for (const Pair<S>& p : m.pairs) {
-      if (!is_contact(p.kind)) continue;
+      if (!p.traits().has_contours) continue;
       for (int j = 0; j < 2; ++j) {
         const Contour<S>& c = m.contours[j == 0 ? p.contour_a : p.contour_b];
         if (c.domain().closed && c.corners().empty()) continue;

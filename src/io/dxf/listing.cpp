@@ -2,7 +2,7 @@
 // entities form (order-free chaining, dxf/chain.cpp, with the join tolerance of that layer's entities, as a
 // selection by layer or "near" + layer has), each with the scene selector that picks exactly it.
 //
-// Selector: {"type": "dxf", "file": BASENAME, "layer": L} when the layer holds one chain; otherwise "near" a
+// Selector: {"type": "dxf", "file": PATH, "layer": L} when the layer holds one chain; otherwise "near" a
 // point on the chain (the middle of its middle segment, else one of 64 points along it) with the layer, when that chain is the nearest to it
 // by more than the tie margin of a selection (kDxfNearTie x the layer's size); otherwise "handles" of its
 // entities when these form exactly this chain alone; otherwise none (empty): a chain with a branch, or an
@@ -49,7 +49,7 @@ std::vector<V> near_candidates(const std::vector<Segment>& segments) {
 json base_selector(const std::string& file, const std::string& layer) {
   json j;
   j["type"] = "dxf";
-  j["file"] = std::filesystem::path(file).filename().string();
+  j["file"] = file;  // the path as given, as every format's selector (README, "contours")
   if (!layer.empty()) j["layer"] = layer;
   return j;
 }

@@ -166,13 +166,12 @@ class SceneReader {
       frame_a = js_.frame((*at)[0], index(child(path, "at"), 0), angle_unit_);
       frame_b = js_.frame((*at)[1], index(child(path, "at"), 1), angle_unit_);
     }
-    std::string var = kind == PairKind::Revolute ? "angle" : "s";
+    std::string var = traits(kind).default_variables[0];
     if (const json* v = js_.get(p, "variable")) var = js_.name(*v, child(path, "variable"), "variable name");
     PairInput in;
     in.values[0] = js_.get(p, "value") ? js_.number(p["value"], child(path, "value"), "the variable's value") : 0.0;
     in.has_values = true;
-    if (kind == PairKind::Revolute) builder_.revolute(name, a, b, frame_a, frame_b, var);
-    else builder_.prismatic(name, a, b, frame_a, frame_b, var);
+    builder_.joint(name, kind, a, b, frame_a, frame_b, var);
     inputs_.push_back(in);
   }
 
@@ -185,7 +184,7 @@ class SceneReader {
     const Mechanism<double>& m = builder_.description();
     if (m.contours[a].link() == m.contours[b].link())
       fail(cp, "both contours are on link \"" + m.links[m.contours[a].link()].name + "\"; a pair must join two different links");
-    std::array<std::string, 2> vars = {"u", "v"};
+    std::array<std::string, 2> vars = {traits(kind).default_variables[0], traits(kind).default_variables[1]};
     if (const json* v = js_.get(p, "variables")) {
       js_.array(*v, child(path, "variables"), "two variable names [u, v]", 2);
       for (int j = 0; j < 2; ++j) vars[j] = js_.name((*v)[j], index(child(path, "variables"), j), "variable name");
@@ -205,30 +204,25 @@ class SceneReader {
         fail(child(path, "hold"), "\"hold\" needs \"values\": a held variable keeps its given value during "
                                   "assembly; give \"values\": [u0, v0] or drop \"hold\"");
     }
-    builder_.contact(name, kind == PairKind::Rolling, a, b, vars[0], vars[1]);
+    builder_.contact(name, kind, a, b, vars[0], vars[1]);
     inputs_.push_back(in);
   }
 
   void read_pairs() {
     const json& pairs = js_.array(js_.require(root_, "", "pairs", "the list of pairs"), "pairs", "the list of pairs");
     if (pairs.empty()) fail("pairs", "expected at least one pair");
-    static const std::vector<std::string> types = {"revolute", "prismatic", "cam", "rolling"};
     for (std::size_t k = 0; k < pairs.size(); ++k) {
       const std::string path = index("pairs", k);
       const json& p = pairs[k];
       if (!p.is_object()) fail(path, "expected a pair object, got " + kind_of(p));
       const std::string type = js_.string(js_.require(p, path, "type", "the pair type"), child(path, "type"), "the pair type");
-      PairKind kind = PairKind::Revolute;
-      if (type == "revolute") kind = PairKind::Revolute;
-      else if (type == "prismatic") kind = PairKind::Prismatic;
-      else if (type == "cam") kind = PairKind::Cam;
-      else if (type == "rolling") kind = PairKind::Rolling;
-      else fail(child(path, "type"), "unknown pair type \"" + type + "\"; expected one of " + quoted_list(types));
+      const std::optional<PairKind> kind = pair_kind_named(type);
+      if (!kind) fail(child(path, "type"), "unknown pair type \"" + type + "\"; expected one of " + quoted_list(pair_kind_names()));
       const std::string name = js_.name(js_.require(p, path, "name", "the pair's name"), child(path, "name"), "pair name");
       if (pair_by_name_.count(name))
         fail(child(path, "name"), "duplicate pair name \"" + name + "\"; pair names must be unique");
-      if (is_contact(kind)) read_contact(p, path, name, kind);
-      else read_joint(p, path, name, kind);
+      if (traits(*kind).has_contours) read_contact(p, path, name, *kind);
+      else read_joint(p, path, name, *kind);
       pair_by_name_.emplace(name, static_cast<int>(k));
     }
   }

@@ -2,8 +2,10 @@
 // listed in registry.cpp. A reader checks the contour object's keys, builds the profile and says on which
 // side the material lies; the scene reader adds the common part (name, "at") and hands it to the builder.
 //
-// Adding a contour kind: one new file under src/io/contours/ defining its reader, and one line in
-// registry.cpp (its declaration and table entry).
+// Adding a contour kind: one new file under src/io/scene/contours/ defining its reader, and one line in
+// registry.cpp (its declaration and table entry); a kind read from a file also gives its file format there
+// (io/contour_formats.hpp: extensions, lister, description), which the listing, the help texts and the tests
+// follow.
 #pragma once
 
 #include "../../json/access.hpp"
@@ -88,11 +90,6 @@ std::vector<std::string> describe_joints(const BezierPath<double>& path, const J
 
 /// Reads the contour object c at JSON path `path`. Throws InputError.
 using ContourReader = ContourShape (*)(const json& c, const std::string& path, const ContourContext& ctx);
-
-struct ContourKind {
-  const char* type;
-  ContourReader read;
-};
 
 /// The reader of a "type", or nullptr when the type is unknown.
 ContourReader find_contour_reader(const std::string& type);
