@@ -235,9 +235,9 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::si
   // Poses at cam angles that are not those of the samples (the grid of the samples halves 1/360 of a turn):
   // the analysis runs between the samples too, where the fitted spline is farthest from the envelope. Solved
   // as `rollkin solve` solves them (round_trip.hpp): a pose counts when its status is ok.
-  const RoundTripSweep swept = round_trip_sweep(scene, round_trip_inputs(poses, spec.rotation), [&](double input) {
-    return "cam angle " + io::format_number(io::from_radians(spec.rotation * input, spec.angle_unit));
-  });
+  const RoundTripInput cam_angle{"cam angle", [&](double input) { return io::format_number(io::from_radians(spec.rotation * input, spec.angle_unit)); },
+                                 std::string(" ") + io::unit_label(spec.angle_unit)};
+  const RoundTripSweep swept = round_trip_sweep(scene, round_trip_inputs(poses, spec.rotation), cam_angle);
   const SweepResult<double>& result = swept.result;
   rt.problems = swept.problems;
   AnalysisData<double> data(m);

@@ -150,9 +150,9 @@ GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene, cons
   const int var = m.find_variable("gear2.phi");
   if (var < 0) throw std::logic_error("gear_round_trip: the scene has no gear2.phi");
   // Solved as `rollkin solve` solves them (round_trip.hpp): a pose counts when its status is ok.
-  const RoundTripSweep swept = round_trip_sweep(scene, inputs.empty() ? round_trip_inputs(997) : inputs, [&](double input) {
-    return "gear1.phi = " + io::format_number(io::from_radians(input, spec.angle_unit));
-  });
+  const RoundTripInput phi1{"gear1.phi", [&](double input) { return io::format_number(io::from_radians(input, spec.angle_unit)); },
+                            std::string(" ") + io::unit_label(spec.angle_unit)};
+  const RoundTripSweep swept = round_trip_sweep(scene, inputs.empty() ? round_trip_inputs(997) : inputs, phi1);
   const SweepResult<double>& result = swept.result;
   rt.problems = swept.problems;
   rt.poses = result.size();

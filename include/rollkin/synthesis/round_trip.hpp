@@ -26,9 +26,14 @@ struct RoundTripSweep {
 /// (+1 or -1): a prime `poses` puts them between the samples of a synthesised contour.
 std::vector<double> round_trip_inputs(std::size_t poses, int direction = 1);
 
-/// Assembles `scene` (io::assembly_error when it cannot) and sweeps its driver over `inputs`; `input_text`
-/// writes an input for the problems' lines (e.g. "cam angle 12.5 deg").
-RoundTripSweep round_trip_sweep(const io::Scene& scene, const std::vector<double>& inputs,
-                                const std::function<std::string(double)>& input_text);
+/// How the problems' lines name the swept input: "cam angle" 12.5 " deg".
+struct RoundTripInput {
+  std::string name;                               // e.g. "cam angle", "gear1.phi"
+  std::function<std::string(double)> value;      // an input (radians) in the spec's unit, as text
+  std::string unit;                               // e.g. " deg" ("" for none)
+};
+
+/// Assembles `scene` (io::assembly_error when it cannot) and sweeps its driver over `inputs`.
+RoundTripSweep round_trip_sweep(const io::Scene& scene, const std::vector<double>& inputs, const RoundTripInput& input);
 
 }  // namespace rollkin::synthesis
