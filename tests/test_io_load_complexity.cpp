@@ -19,8 +19,8 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/json_document.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/json/document.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
 

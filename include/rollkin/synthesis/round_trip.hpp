@@ -5,7 +5,7 @@
 // of the round trip, named with its input (docs/reliability.md, "Synthesis (issue 37)").
 #pragma once
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/sweep_result.hpp"
 #include "rollkin/solve/sweep_summary.hpp"
 
