@@ -155,7 +155,7 @@ BOOST_AUTO_TEST_CASE(samples_come_with_their_lines) {
 BOOST_AUTO_TEST_CASE(a_table_takes_a_header_naming_any_two_columns) {
   const fs::path dir = fs::temp_directory_path() / "rollkin_point_file_table";
   fs::create_directories(dir);
-  for (const std::string header : {"theta_deg,s_mm", "\"cam angle\";lift", "phi1 phi2", "Theta (deg), S (mm)", "x y"}) {
+  for (const std::string header : {"theta_deg,s_mm", "\"cam_angle\";lift", "phi1 phi2", "Theta (deg), S (mm)", "x y"}) {
     BOOST_TEST_CONTEXT(header) {
       std::ofstream(dir / "law.txt") << header << "\n0 1\n90 2.5\n180 3\n270 -4\n";
       const rollkin::io::PointSamples rows = rollkin::io::read_table_file((dir / "law.txt").string(), 4);
