@@ -38,7 +38,8 @@ GearSpec spec_of(const std::string& kind, double parameter, double E) {
   return s;
 }
 
-GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::string& name) {
+/// Writes the design's pitch curves and scene as kDir/NAME.1.txt, NAME.2.txt and NAME.json; returns the scene's path.
+std::string write_design(const GearSpec& spec, const GearDesign& d, const std::string& name) {
   std::filesystem::create_directories(kDir);
   auto write = [](const std::filesystem::path& p, const std::vector<Vec2<double>>& pts) {
     std::ofstream f(p);
@@ -48,7 +49,11 @@ GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::s
   write(kDir / (name + ".1.txt"), d.pair.gear1);
   write(kDir / (name + ".2.txt"), d.pair.gear2);
   std::ofstream(kDir / (name + ".json")) << gear_scene(spec, d, name + ".1.txt", name + ".2.txt").dump(2);
-  return gear_round_trip(spec, (kDir / (name + ".json")).string());
+  return (kDir / (name + ".json")).string();
+}
+
+GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::string& name) {
+  return gear_round_trip(spec, write_design(spec, d, name));
 }
 
 }  // namespace
@@ -114,16 +119,7 @@ BOOST_AUTO_TEST_CASE(a_table_that_does_not_close_is_reported) {
 BOOST_AUTO_TEST_CASE(one_pose_one_status_whichever_command_solves_it) {
   const GearSpec spec = spec_of("elliptical", 0.999, 80);
   const GearDesign d = synthesise_gears(spec);
-  std::filesystem::create_directories(kDir);
-  auto write = [](const std::filesystem::path& p, const std::vector<Vec2<double>>& pts) {
-    std::ofstream f(p);
-    f << std::setprecision(17);
-    for (const auto& x : pts) f << x.x() << " " << x.y() << "\n";
-  };
-  write(kDir / "eccentric.1.txt", d.pair.gear1);
-  write(kDir / "eccentric.2.txt", d.pair.gear2);
-  std::ofstream(kDir / "eccentric.json") << gear_scene(spec, d, "eccentric.1.txt", "eccentric.2.txt").dump(2);
-  auto scene = std::make_shared<const io::Scene>(io::load_scene((kDir / "eccentric.json").string()));
+  auto scene = std::make_shared<const io::Scene>(io::load_scene(write_design(spec, d, "eccentric")));
 
   output::SweepRun run(scene, {}, {}, output::SweepRequest{}, output::RequestNames{"--from/--to/--step", "--from, --to and --step", "--max-steps"});
   SolveData<double> sd(run.mechanism());
