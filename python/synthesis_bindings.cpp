@@ -70,10 +70,17 @@ PyScene scene_of(json document, const std::string& name, const std::string& dir)
 
 py::dict synthesize_cam(const py::object& spec_arg, const py::object& base_dir) {
   auto [document, file, dir] = spec_document(spec_arg, base_dir);
-  const synthesis::CamSpec spec = synthesis::cam_spec_from_document(document, file, dir);
+  // Reading the spec (a law table's spline) and the continuity check run without the GIL, Ctrl-C answered.
+  using SpecAndJumps = std::pair<synthesis::CamSpec, std::vector<synthesis::LawJump<double>>>;
+  const SpecAndJumps read = interruptible<SpecAndJumps>([document = document, file = file, dir = dir](const std::atomic<bool>&) {
+    synthesis::CamSpec spec = synthesis::cam_spec_from_document(document, file, dir);
+    std::vector<synthesis::LawJump<double>> jumps = spec.law->check_continuity();
+    return SpecAndJumps{std::move(spec), std::move(jumps)};
+  });
+  const synthesis::CamSpec& spec = read.first;
   py::dict out;
   py::list jumps;
-  for (const auto& j : spec.law->check_continuity())
+  for (const auto& j : read.second)
     jumps.append(py::dict(py::arg("cam_angle") = rollkin::io::from_radians(j.theta, spec.angle_unit), py::arg("order") = j.order,
                           py::arg("left") = j.left, py::arg("right") = j.right));
   out["jumps"] = jumps;
@@ -126,7 +133,9 @@ py::dict synthesize_cam(const py::object& spec_arg, const py::object& base_dir) 
 
 py::dict synthesize_gears(const py::object& spec_arg, const py::object& base_dir) {
   auto [document, file, dir] = spec_document(spec_arg, base_dir);
-  const synthesis::GearSpec spec = synthesis::gear_spec_from_document(document, file, dir);
+  const synthesis::GearSpec spec = interruptible<synthesis::GearSpec>([document = document, file = file, dir = dir](const std::atomic<bool>&) {
+    return synthesis::gear_spec_from_document(document, file, dir);
+  });
   py::dict out;
   const double turn_error = spec.closure_error;
   out["closes"] = std::abs(turn_error) <= spec.tolerance;

@@ -1,7 +1,8 @@
 // Loading is linear in the input's size, n log n at most (docs/reliability.md, "Input files are regular files,
 // read in time linear in their size"): a scene whose input is 4n long loads in at most 5 times the time of
 // one n long, for every reader: point files, SVG path data (smooth and all corners), SVG nested groups, DXF
-// LWPOLYLINE, SPLINE and chains of LINE entities, inline NURBS, and the scene's JSON itself (links and pairs).
+// LWPOLYLINE, SPLINE and chains of LINE entities, inline NURBS, the scene's JSON itself (links and pairs), and
+// the synthesis specs' law tables, segment lists and gear tables (with the law's continuity check).
 // Before, a 16,000-point NURBS or DXF SPLINE took 11.6 CPU s (knot insertion over the whole control polygon
 // for every knot, multiplicities counted over the whole knot vector), an SVG element under 10^5 nested groups
 // 26 CPU s (a location text, counting lines from the file's start, built for every ancestor), and a scene of
@@ -18,7 +19,10 @@
 
 #include "test_support.hpp"
 
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/scene/reader.hpp"
+#include "rollkin/synthesis/cam.hpp"
+#include "rollkin/synthesis/gears.hpp"
 
 #include <malloc.h>
 #include <time.h>
@@ -39,8 +43,14 @@ double thread_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+/// Reads one input: its text and the file it stands for (relative files are read beside it).
+using Loader = std::function<void(const std::string& text, const std::string& file)>;
+
+void load_scene(const std::string& text, const std::string& file) { rollkin::io::parse_scene(text, file); }
+
 /// The least CPU time of `loads` loads of each scene text, loaded in turn: {small, large}.
-std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const fs::path& scene_file, int loads) {
+std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const fs::path& scene_file, int loads,
+                                 const Loader& load) {
   // Memory freed by one load stays in the heap for the next (no trimming, no mmap per large block): the
   // kernel's page faults on fresh memory are not counted in each load again.
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
@@ -49,7 +59,7 @@ std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const
   for (int k = 0; k < loads; ++k)
     for (std::size_t which = 0; which < 2; ++which) {
       const double t0 = thread_cpu_seconds();
-      rollkin::io::parse_scene(scenes[which], scene_file.string());
+      load(scenes[which], scene_file.string());
       best[which] = std::min(best[which], thread_cpu_seconds() - t0);
     }
   return best;
@@ -69,14 +79,15 @@ std::string number(double x) {
 }
 
 /// Loads the scenes made by make(n) and make(4 n) and checks the cost ratio (see the comment at the top).
-void check_linear(const std::string& what, std::size_t n, const std::function<std::string(std::size_t)>& make) {
+void check_linear(const std::string& what, std::size_t n, const std::function<std::string(std::size_t)>& make,
+                  const Loader& load = load_scene) {
   const double bound = 5;
   const fs::path scene_file = rollkin::testing::scratch_dir("io_load_complexity") / "scene.json";
   const std::array<std::string, 2> scenes{make(n), make(4 * n)};
   double ratio = INFINITY;
   std::array<double, 2> least{};
   for (int attempt = 0; attempt < 3 && ratio > bound; ++attempt) {
-    const std::array<double, 2> t = load_costs(scenes, scene_file, 7);
+    const std::array<double, 2> t = load_costs(scenes, scene_file, 7, load);
     if (t[1] / t[0] < ratio) ratio = t[1] / t[0], least = t;
   }
   BOOST_TEST_MESSAGE(what << ": n = " << n << " loads in " << least[0] << " s, 4n in " << least[1] << " s: ratio " << ratio);
@@ -213,7 +224,68 @@ std::string four_bar_ladder(std::size_t n) {
   return R"({"links": [)" + links.str() + R"(], "pairs": [)" + pairs.str() + R"(], "inputs": ["O.phi"]})";
 }
 
+/// A cam spec (docs/synthesis.md) with `law` as its "law": read, and its law's continuity checked at every
+/// join and its stroke measured, as `synthesize cam` does before it makes the profile.
+void load_cam_spec(const std::string& text, const std::string& file) {
+  const rollkin::synthesis::CamSpec spec = rollkin::synthesis::cam_spec_from_document(
+      rollkin::io::parse_json_document(text, file), file, fs::path(file).parent_path().string());
+  spec.law->check_continuity();
+}
+
+std::string cam_spec(const std::string& law) {
+  return R"({"base_radius": 40, "follower": {"motion": "translating"}, "contact": {"roller_radius": 10}, "law": )" + law + "}";
+}
+
+/// A law table of n rows starting at -90 degrees (a header line naming the columns).
+std::string law_table(std::size_t n) {
+  const std::string name = "law_" + std::to_string(n) + ".txt";
+  std::ostringstream text;
+  text << "theta_deg,s_mm\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double deg = -90 + 360.0 * static_cast<double>(i) / static_cast<double>(n);
+    text << number(deg) << "," << number(5 * (1 - std::cos(deg * M_PI / 180)) + 0.1 * std::sin(3 * deg * M_PI / 180)) << "\n";
+  }
+  rollkin::testing::write_text(rollkin::testing::scratch_dir("io_load_complexity") / name, text.str());
+  return cam_spec(R"({"file": ")" + name + R"("})");
+}
+
+/// n cycloidal segments, rises and returns in turn.
+std::string law_segments(std::size_t n) {
+  std::ostringstream law;
+  law << "[";
+  for (std::size_t i = 0; i < n; ++i)
+    law << (i ? ", " : "") << R"({"to": )" << number(360.0 * static_cast<double>(i + 1) / static_cast<double>(n))
+        << R"(, "kind": "cycloidal", "lift": )" << (i % 2 ? "-1" : "1") << "}";
+  return cam_spec(law.str() + "]");
+}
+
+/// A gear spec whose transmission is a table of n + 1 rows (phi1 from -180 degrees over one turn).
+std::string gear_table(std::size_t n) {
+  const std::string name = "gear_" + std::to_string(n) + ".txt";
+  std::ostringstream text;
+  text << "phi1 phi2\n";
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double deg = -180 + 360.0 * static_cast<double>(i) / static_cast<double>(n);
+    text << number(deg) << " " << number(deg + 20 * std::sin(deg * M_PI / 180)) << "\n";
+  }
+  rollkin::testing::write_text(rollkin::testing::scratch_dir("io_load_complexity") / name, text.str());
+  return R"({"centre_distance": 80, "transmission": {"file": ")" + name + R"("}})";
+}
+
+void load_gear_spec(const std::string& text, const std::string& file) {
+  rollkin::synthesis::gear_spec_from_document(rollkin::io::parse_json_document(text, file), file,
+                                              fs::path(file).parent_path().string());
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(synthesis_tables_and_segment_lists_load_in_linear_time) {
+  // Before (issue 37): every evaluation of a law searched its segments or rows linearly and the continuity
+  // check evaluates every join, 10^5 rows took 6.3 s and 10^6 about ten minutes.
+  check_linear("law table", 20000, law_table, load_cam_spec);
+  check_linear("law segments", 5000, law_segments, load_cam_spec);
+  check_linear("gear table", 20000, gear_table, load_gear_spec);
+}
 
 BOOST_AUTO_TEST_CASE(an_inline_nurbs_loads_in_linear_time) { check_linear("inline NURBS", 4000, inline_nurbs); }
 

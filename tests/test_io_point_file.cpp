@@ -14,6 +14,7 @@
 #include <random>
 #include <sstream>
 
+namespace fs = std::filesystem;
 using rollkin::io::InputError;
 using rollkin::io::parse_point_text;
 using rollkin::io::read_point_file;
@@ -231,4 +232,35 @@ BOOST_AUTO_TEST_CASE(writer_refuses_what_the_reader_refuses) {
   rollkin::io::PointFileText file;
   file.point({0, 0});
   BOOST_CHECK_THROW(file.header(), std::logic_error);  // a header after a point would be read as a bad point
+
+// A table (a motion law, a gear transmission, a scan) names its two columns as it likes (issue 37: a law file
+// with the header "theta_deg,s_mm" was refused unless it said "x y"); the same reader, so every table reader
+// takes it. Still refused: a header of three names, or names mixed with numbers; and a contour's file keeps
+// the x y rule ("theta r" would be polar samples read as x y).
+BOOST_AUTO_TEST_CASE(a_table_takes_a_header_naming_any_two_columns) {
+  const fs::path dir = fs::temp_directory_path() / "rollkin_point_file_table";
+  fs::create_directories(dir);
+  for (const std::string header : {"theta_deg,s_mm", "\"cam_angle\";lift", "phi1 phi2", "Theta (deg), S (mm)", "x y"}) {
+    BOOST_TEST_CONTEXT(header) {
+      std::ofstream(dir / "law.txt") << header << "\n0 1\n90 2.5\n180 3\n270 -4\n";
+      const rollkin::io::PointSamples rows = rollkin::io::read_table_file((dir / "law.txt").string(), 4);
+      BOOST_REQUIRE_EQUAL(rows.points.size(), 4u);
+      BOOST_TEST(rows.points[1].x() == 90.0);
+      BOOST_TEST(rows.points[3].y() == -4.0);
+      BOOST_TEST(rows.lines.front() == 2u);
+    }
+  }
+  for (const std::string header : {"theta s extra", "theta 5"}) {
+    BOOST_TEST_CONTEXT(header) {
+      std::ofstream(dir / "bad.txt") << header << "\n0 1\n90 2.5\n180 3\n270 -4\n";
+      try {
+        rollkin::io::read_table_file((dir / "bad.txt").string(), 4);
+        BOOST_FAIL("no error");
+      } catch (const InputError& e) {
+        BOOST_TEST(e.location() == "1");
+        BOOST_TEST(std::string(e.what()).find("header") != std::string::npos);
+      }
+    }
+  }
+  BOOST_CHECK_THROW(parse_point_text("theta_deg,s_mm\n0 1\n1 2\n", "contour.txt", 2), InputError);
 }

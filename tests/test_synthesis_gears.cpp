@@ -5,12 +5,16 @@
 //  - its f and f' against a central difference and against the closed form of the half-angle relation;
 //  - the round trip of the written scene (rolling pair of the two sampled curves, 998 poses) keeps gear 2 at
 //    -f(phi1) to 1e-9 of a turn, for the elliptical and the sinusoidal pair;
-//  - a table whose last phi2 is not the first + 360 deg is read with its closure error (the pair does not close).
+//  - a table whose last phi2 is not the first + 360 deg is read with its closure error (the pair does not close);
+//  - one pose, one status: the round trip's statuses are `rollkin solve`'s (SweepRun) pose by pose (e = 0.999).
 #define BOOST_TEST_MODULE synthesis_gears
 #include <boost/test/unit_test.hpp>
 
+#include "rollkin/output/sweep_run.hpp"
+#include "rollkin/solve/continuation.hpp"
 #include "rollkin/synthesis/gears.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,7 +38,8 @@ GearSpec spec_of(const std::string& kind, double parameter, double E) {
   return s;
 }
 
-GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::string& name) {
+/// Writes the design's pitch curves and scene as kDir/NAME.1.txt, NAME.2.txt and NAME.json; returns the scene's path.
+std::string write_design(const GearSpec& spec, const GearDesign& d, const std::string& name) {
   std::filesystem::create_directories(kDir);
   auto write = [](const std::filesystem::path& p, const std::vector<Vec2<double>>& pts) {
     std::ofstream f(p);
@@ -44,7 +49,11 @@ GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::s
   write(kDir / (name + ".1.txt"), d.pair.gear1);
   write(kDir / (name + ".2.txt"), d.pair.gear2);
   std::ofstream(kDir / (name + ".json")) << gear_scene(spec, d, name + ".1.txt", name + ".2.txt").dump(2);
-  return gear_round_trip(spec, (kDir / (name + ".json")).string());
+  return (kDir / (name + ".json")).string();
+}
+
+GearRoundTrip round_trip(const GearSpec& spec, const GearDesign& d, const std::string& name) {
+  return gear_round_trip(spec, write_design(spec, d, name));
 }
 
 }  // namespace
@@ -99,4 +108,41 @@ BOOST_AUTO_TEST_CASE(a_table_that_does_not_close_is_reported) {
   }
   const GearSpec spec = read_gear_spec((kDir / "open.json").string());
   BOOST_TEST(std::abs(spec.closure_error - 3.6 * kPi / 180) < 1e-12);  // f(360) - f(0) = 363.6 deg
+}
+
+// One pose, one status, whichever command solves it (issue 37): `synthesize gears` with eccentricity 0.999
+// said 998/998 poses solved (it counted a singular pose as solved) where `rollkin solve` of the scene it wrote
+// reported 118 singular poses. The round trip now sweeps by the library's path and counts what `rollkin
+// solve` counts: on the scene's own sweep (the inputs `rollkin solve` takes, through output::SweepRun as the
+// command line does) every pose has the same status in both, and the round trip counts as solved exactly the
+// poses that are `ok`, naming the others among its problems.
+BOOST_AUTO_TEST_CASE(one_pose_one_status_whichever_command_solves_it) {
+  const GearSpec spec = spec_of("elliptical", 0.999, 80);
+  const GearDesign d = synthesise_gears(spec);
+  auto scene = std::make_shared<const io::Scene>(io::load_scene(write_design(spec, d, "eccentric")));
+
+  output::SweepRun run(scene, {}, {}, output::SweepRequest{}, output::RequestNames{"--from/--to/--step", "--from, --to and --step", "--max-steps"});
+  SolveData<double> sd(run.mechanism());
+  VectorX<double> q;
+  const SolveReport<double> assembly = run.assemble(sd, q);
+  const SweepResult<double> solved = run.solve(sd, q, assembly);
+  const SweepSummary<double> summary = summarise(solved);
+
+  const GearRoundTrip rt = gear_round_trip(spec, *scene, run.inputs());
+  BOOST_TEST_REQUIRE(rt.statuses.size() == solved.size());
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < solved.size(); ++k) differ += rt.statuses[k] != solved.status(k);
+  BOOST_TEST(differ == 0u);
+  BOOST_TEST(rt.solved == summary.solved());
+  BOOST_TEST_MESSAGE("e = 0.999: " << summary.solved() << "/" << solved.size() << " ok, " << summary.singular.size() << " singular");
+  const bool all_ok = summary.solved() == solved.size() && solved.limits.empty();
+  BOOST_TEST(rt.problems.empty() == all_ok);
+  if (!summary.singular.empty()) {
+    bool named = false;
+    for (const auto& p : rt.problems) named = named || p.find(std::to_string(summary.singular.size()) + " singular pose") != std::string::npos;
+    BOOST_TEST(named);
+  }
+  // The round trip's own 998 poses: solved is the number of `ok` poses, never more.
+  const GearRoundTrip own = gear_round_trip(spec, *scene);
+  BOOST_TEST(own.solved == static_cast<std::size_t>(std::count(own.statuses.begin(), own.statuses.end(), SolveStatus::Converged)));
 }

@@ -65,10 +65,9 @@ std::string decimal_commas(const std::string& text) {
          "points (\"" + fields[0] + " " + fields[1] + "\"): ',' separates the columns";
 }
 
-/// Whether a header line's fields name the columns x then y: "x y", "x,y", "\"X\";\"Y\"", "x_mm y_mm",
-/// "x (mm), y (mm)" (quotes and case ignored, a unit in brackets or after '_' allowed). Anything else (e.g.
-/// "theta r": polar samples) would be read as x y silently wrong, so it is refused.
-bool header_names_x_and_y(const std::vector<std::string>& fields) {
+/// The column names of a header line's fields: quotes and case dropped, a unit in brackets after a name
+/// ("x (mm)") not counted as a name of its own.
+std::vector<std::string> header_names(const std::vector<std::string>& fields) {
   std::vector<std::string> names;
   for (std::string f : fields) {
     f.erase(std::remove_if(f.begin(), f.end(), [](char c) { return c == '"' || c == '\''; }), f.end());
@@ -76,15 +75,37 @@ bool header_names_x_and_y(const std::vector<std::string>& fields) {
     if (f.empty() || f.front() == '(' || f.front() == '[') continue;  // a unit of the previous name
     names.push_back(f);
   }
+  return names;
+}
+
+/// Whether the names are x then y: "x y", "x,y", "\"X\";\"Y\"", "x_mm y_mm", "x (mm), y (mm)" (a unit in
+/// brackets or after '_' allowed). For a contour anything else (e.g. "theta r": polar samples) would be read
+/// as x y silently wrong, so it is refused.
+bool names_x_and_y(const std::vector<std::string>& names) {
   auto names_axis = [](const std::string& f, char axis) {
     return f[0] == axis && (f.size() == 1 || f[1] == '_' || f[1] == '(' || f[1] == '[');
   };
   return names.size() == 2 && names_axis(names[0], 'x') && names_axis(names[1], 'y');
 }
 
+/// What is wrong with a header line (fields, none a number in the first place) for `columns`; "" when it is
+/// a header the file may have (header_rule in point_file.hpp).
+std::string header_problem(const std::vector<std::string>& fields, HeaderNames columns) {
+  const std::vector<std::string> names = header_names(fields);
+  if (columns == HeaderNames::XAndY)
+    return names_x_and_y(names) ? "" : "does not name the columns x and y; a point file holds the coordinates x y of a planar "
+                                       "contour, so a header line must name x then y (e.g. \"x,y\" or \"x_mm y_mm\")";
+  double ignored = 0;
+  for (const std::string& f : fields)
+    if (parse_number(f, ignored)) return "mixes names and numbers; a header line names the two columns (e.g. \"theta_deg,s_mm\")";
+  if (names.size() != 2)
+    return "names " + std::to_string(names.size()) + " columns; the table has two (e.g. \"theta_deg,s_mm\")";
+  return "";
+}
+
 class PointParser {
  public:
-  PointParser(const std::string& source, double scale) : source_(source), scale_(scale) {}
+  PointParser(const std::string& source, double scale, HeaderNames columns) : source_(source), scale_(scale), columns_(columns) {}
 
   void line(std::string text, std::size_t number) {
     const std::size_t hash = text.find('#');
@@ -97,9 +118,7 @@ class PointParser {
     const bool x_ok = parse_number(fields[0], x);
     const auto shown = [&] { return "\"" + excerpt(trimmed(text)) + "\""; };  // for messages only
     if (first_content && !x_ok) {  // the header line
-      if (!header_names_x_and_y(fields))
-        fail(number, "header " + shown() + " does not name the columns x and y; a point file holds the coordinates x y " +
-                         "of a planar contour, so a header line must name x then y (e.g. \"x,y\" or \"x_mm y_mm\")");
+      if (const std::string why = header_problem(fields, columns_); !why.empty()) fail(number, "header " + shown() + " " + why);
       return;
     }
     const std::string expected = "expected two numbers \"x y\", got ";
@@ -134,6 +153,7 @@ class PointParser {
 
   const std::string& source_;
   double scale_;
+  HeaderNames columns_;
   bool seen_content_ = false;
   std::size_t last_line_ = 0;
   std::vector<Vec2<double>> points_;
@@ -163,11 +183,12 @@ void check_encoding(const std::string& text, const std::string& source) {
     }
 }
 
-PointSamples parse_text(const std::string& text, const std::string& source, std::size_t min_points, double scale) {
+PointSamples parse_text(const std::string& text, const std::string& source, std::size_t min_points, double scale,
+                        HeaderNames columns) {
   if (!std::isfinite(scale) || !(scale > 0))
     throw InputError(source, "", "scale factor must be a positive finite number, got " + std::to_string(scale));
   check_encoding(text, source);
-  PointParser parser(source, scale);
+  PointParser parser(source, scale, columns);
   std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // UTF-8 byte order mark
   for (std::size_t number = 1; start < text.size(); ++number) {
     std::size_t end = text.find('\n', start);
@@ -180,17 +201,21 @@ PointSamples parse_text(const std::string& text, const std::string& source, std:
 
 }  // namespace
 
-PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale) {
-  return parse_text(io::read_input_file(path, "the point file"), path, min_points, scale);
+PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale, HeaderNames columns) {
+  return parse_text(io::read_input_file(path, "the point file"), path, min_points, scale, columns);
+}
+
+PointSamples read_table_file(const std::string& path, std::size_t min_rows) {
+  return read_point_samples(path, min_rows, 1.0, HeaderNames::AnyTwo);
 }
 
 std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t min_points, double scale) {
-  return read_point_samples(path, min_points, scale).points;
+  return read_point_samples(path, min_points, scale, HeaderNames::XAndY).points;
 }
 
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source, std::size_t min_points,
-                                           double scale) {
-  return parse_text(text, source, min_points, scale).points;
+                                           double scale, HeaderNames columns) {
+  return parse_text(text, source, min_points, scale, columns).points;
 }
 
 // ---- writing ----------------------------------------------------------------------------------------------

@@ -5,7 +5,7 @@
 #include "rollkin/analysis/motion.hpp"
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/scene/reader.hpp"
-#include "rollkin/solve/continuation.hpp"
+#include "rollkin/synthesis/round_trip.hpp"
 
 #include "../io/json/access.hpp"
 
@@ -155,7 +155,7 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   json scene = json::object();
   scene["description"] = "Written by rollkin synthesize cam from " + spec.file +
                          ": the cam turns on the revolute 'cam' (theta), the follower moves on the pair 'follower' "
-                         "(zero at the law's zero) and touches the profile through the cam pair 'contact'.";
+                         "(the law's displacement s itself) and touches the profile through the cam pair 'contact'.";
   json units = json::object();
   if (!spec.length_label.empty()) units["length"] = spec.length_label;
   units["angle"] = deg ? "deg" : "rad";
@@ -166,7 +166,10 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   double follower_value = 0;  // the follower contour's parameter at the contact, theta = 0
   // The follower's frame: the world's axes at its origin for a translating follower (the prismatic pair's frame
   // on the follower is turned back by its 90 degrees), the arm's frame at the pivot for an oscillating one.
-  const double frame_angle = spec.motion == FollowerMotion::Translating ? 0.0 : spec.start_angle;
+  // The follower's variable is the law's displacement s itself (zero on the base circle, where the spec places
+  // the follower), so it starts at s(0) (docs/synthesis.md, "The scene"): the round trip compares it with s.
+  const double s0 = (*spec.law)(0.0).s;
+  const double frame_angle = spec.motion == FollowerMotion::Translating ? 0.0 : spec.start_angle + s0;
   std::string follower_contour_name;
   if (spec.contact == FollowerContact::Contour) {
     follower_contour = spec.follower_contour;
@@ -198,16 +201,16 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   json pairs = json::array();
   pairs.push_back({{"name", "cam"}, {"type", "revolute"}, {"links", {"frame", "cam"}}, {"variable", "theta"}, {"value", 0}});
   if (spec.motion == FollowerMotion::Translating) {
-    const V at = spec.contact == FollowerContact::Roller ? origin : V(spec.offset, spec.base_radius);
+    const V at = spec.contact == FollowerContact::Roller ? V(origin - V(0, s0)) : V(spec.offset, spec.base_radius);
     const double quarter = angle_out(pi<double>() / 2);
     pairs.push_back({{"name", "follower"}, {"type", "prismatic"}, {"links", {"frame", "follower"}},
                      {"at", json::array({{{"x", at.x()}, {"y", at.y()}, {"angle", quarter}}, {{"angle", quarter}}})},
-                     {"variable", "s"}, {"value", 0}});
+                     {"variable", "s"}, {"value", s0}});
   } else {
     pairs.push_back({{"name", "follower"}, {"type", "revolute"}, {"links", {"frame", "follower"}},
                      {"at", json::array({{{"x", spec.pivot.x()}, {"y", spec.pivot.y()}, {"angle", angle_out(spec.start_angle)}},
                                          json::object()})},
-                     {"variable", "phi"}, {"value", 0}});
+                     {"variable", "phi"}, {"value", angle_out(s0)}});
   }
   pairs.push_back({{"name", "contact"}, {"type", "cam"},
                    {"contours", {"cam.profile", "follower." + follower_contour_name}},
@@ -229,25 +232,21 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::si
   const std::string follower_variable = spec.motion == FollowerMotion::Translating ? "follower.s" : "follower.phi";
   const int var = m.find_variable(follower_variable);
   if (var < 0) throw std::logic_error("cam_round_trip: the scene has no " + follower_variable);
-  SolveData<double> sd(m);
-  VectorX<double> q = scene.guess;
-  const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
-  if (assembly.status == SolveStatus::CannotAssemble) throw io::assembly_error(scene, assembly.detail);
   // Poses at cam angles that are not those of the samples (the grid of the samples halves 1/360 of a turn):
-  // the analysis runs between the samples too, where the fitted spline is farthest from the envelope.
-  std::vector<double> inputs;
-  for (std::size_t k = 0; k <= poses; ++k) inputs.push_back(spec.rotation * 2 * pi<double>() * double(k) / double(poses));
-  const SweepResult<double> result = sweep(m, sd, q, assembly, scene.sweep->driver, inputs);
+  // the analysis runs between the samples too, where the fitted spline is farthest from the envelope. Solved
+  // as `rollkin solve` solves them (round_trip.hpp): a pose counts when its status is ok.
+  const RoundTripInput cam_angle{"cam angle", [&](double input) { return io::format_number(io::from_radians(spec.rotation * input, spec.angle_unit)); },
+                                 std::string(" ") + io::unit_label(spec.angle_unit)};
+  const RoundTripSweep swept = round_trip_sweep(scene, round_trip_inputs(poses, spec.rotation), cam_angle);
+  const SweepResult<double>& result = swept.result;
+  rt.problems = swept.problems;
   AnalysisData<double> data(m);
   rt.poses = result.size();
   rt.min_radius_of_curvature = std::numeric_limits<double>::infinity();
   double smallest_abs_radius = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < result.size(); ++k) {
     const double theta = spec.rotation * result.input(k);
-    if (!result.has_pose(k)) {
-      rt.problems.push_back("no pose at cam angle " + io::format_number(io::from_radians(theta, spec.angle_unit)));
-      continue;
-    }
+    if (!result.ok(k)) continue;  // its status is among the problems
     ++rt.solved;
     const double prescribed = (*spec.law)(theta).s;
     const double deviation = std::abs(result.q(k)[var] - prescribed);
@@ -270,9 +269,6 @@ CamRoundTrip cam_round_trip(const CamSpec& spec, const io::Scene& scene, std::si
       rt.min_radius_at = theta;
     }
   }
-  for (const auto& l : result.limits)
-    rt.problems.push_back("the sweep stopped at cam angle " + io::format_number(io::from_radians(spec.rotation * l.limit_input, spec.angle_unit)) +
-                          ": " + l.detail);
   return rt;
 }
 

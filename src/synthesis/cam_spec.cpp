@@ -233,10 +233,10 @@ class CamSpecReader {
     spec.files_read.push_back(path.string());
     io::PointSamples rows;
     try {
-      rows = io::read_point_samples(path.string(), 4);
+      rows = io::read_table_file(path.string(), 4);
     } catch (const io::InputError& e) {  // the point file's words are about x y: say what the columns are here
       throw io::InputError(e.file(), e.location(), e.message() + " (a law file is read as a point file: two columns, the cam angle then "
-                                                             "the follower's displacement; no header line, or one naming x y)");
+                                                             "the follower's displacement, and an optional header line naming them)");
     }
     std::vector<double> theta, s;
     for (const auto& p : rows.points) {

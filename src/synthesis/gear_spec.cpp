@@ -50,10 +50,10 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     spec.files_read.push_back(file.string());
     io::PointSamples rows;
     try {
-      rows = io::read_point_samples(file.string(), 5);
+      rows = io::read_table_file(file.string(), 5);
     } catch (const io::InputError& e) {  // the point file's words are about x y: say what the columns are here
       throw io::InputError(e.file(), e.location(), e.message() + " (a transmission table is read as a point file: two columns, phi1 "
-                                                             "then phi2; no header line, or one naming x y)");
+                                                             "then phi2, and an optional header line naming them)");
     }
     std::vector<double> p, g;
     for (const auto& r : rows.points) {

@@ -5,7 +5,7 @@
 
 #include "rollkin/io/scene/reader.hpp"
 #include "rollkin/profile/spline.hpp"
-#include "rollkin/solve/continuation.hpp"
+#include "rollkin/synthesis/round_trip.hpp"
 
 #include "../io/json/access.hpp"
 
@@ -140,26 +140,26 @@ json gear_scene(const GearSpec& spec, const GearDesign& d, const std::string& fi
 }
 
 GearRoundTrip gear_round_trip(const GearSpec& spec, const std::string& scene_file) {
-  return gear_round_trip(spec, io::load_scene(scene_file));
+  return gear_round_trip(spec, io::load_scene(scene_file), {});
 }
 
-GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene) {
+GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene, const std::vector<double>& inputs) {
   const TransmissionFunction<double> t = transmission(spec);
   GearRoundTrip rt;
   const Mechanism<double>& m = scene.mechanism;
   const int var = m.find_variable("gear2.phi");
   if (var < 0) throw std::logic_error("gear_round_trip: the scene has no gear2.phi");
-  SolveData<double> sd(m);
-  VectorX<double> q = scene.guess;
-  const SolveReport<double> assembly = assemble(m, q, sd, scene.held);
-  if (assembly.status == SolveStatus::CannotAssemble) throw io::assembly_error(scene, assembly.detail);
-  std::vector<double> inputs;
-  const std::size_t poses = 997;
-  for (std::size_t k = 0; k <= poses; ++k) inputs.push_back(2 * pi<double>() * double(k) / double(poses));
-  const SweepResult<double> result = sweep(m, sd, q, assembly, scene.sweep->driver, inputs);
+  // Solved as `rollkin solve` solves them (round_trip.hpp): a pose counts when its status is ok.
+  const RoundTripInput phi1{"gear1.phi", [&](double input) { return io::format_number(io::from_radians(input, spec.angle_unit)); },
+                            std::string(" ") + io::unit_label(spec.angle_unit)};
+  const RoundTripSweep swept = round_trip_sweep(scene, inputs.empty() ? round_trip_inputs(997) : inputs, phi1);
+  const SweepResult<double>& result = swept.result;
+  rt.problems = swept.problems;
   rt.poses = result.size();
+  rt.statuses.reserve(result.size());
   for (std::size_t k = 0; k < result.size(); ++k) {
-    if (!result.has_pose(k)) continue;
+    rt.statuses.push_back(result.status(k));
+    if (!result.ok(k)) continue;
     ++rt.solved;
     const double phi1 = result.input(k);
     const double deviation = std::abs(std::remainder(result.q(k)[var] + t.f(phi1), 2 * pi<double>()));
@@ -168,9 +168,6 @@ GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene) {
       rt.worst_deviation_at = phi1;
     }
   }
-  for (const auto& l : result.limits)
-    rt.problems.push_back("the sweep stopped at gear1.phi = " + io::format_number(io::from_radians(l.limit_input, spec.angle_unit)) + ": " + l.detail);
-  if (rt.solved < rt.poses) rt.problems.push_back(std::to_string(rt.poses - rt.solved) + " poses not solved");
   return rt;
 }
 

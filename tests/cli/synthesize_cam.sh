@@ -206,8 +206,11 @@ cat > hdr.json <<EOF
 {"base_radius": 40, "follower": {"motion": "translating"}, "contact": {"roller_radius": 10}, "law": {"file": "hdr_law.txt"}}
 EOF
 "$BIN" synthesize cam hdr.json --out hdr_out > /dev/null 2> hdr.err
-[ $? -eq 2 ] && grep -q "hdr_law.txt:1:" hdr.err && grep -q "a law file is read as a point file" hdr.err
-check "a law file with a header other than x y: exit 2 at its line, saying what the columns are" $?
+check "a law file with a header naming its columns (theta,s): taken, exit 0" $?
+printf 'theta s extra\n0 0\n90 1\n180 2\n270 1\n' > hdr_law.txt
+"$BIN" synthesize cam hdr.json --out hdr_out3 > /dev/null 2> hdr.err
+[ $? -eq 2 ] && grep -q "hdr_law.txt:1:" hdr.err && grep -q "a law file is read as a point file" hdr.err && [ ! -e hdr_out3.json ]
+check "a law file whose header names three columns: exit 2 at its line, saying what the columns are" $?
 echo '{"centre_distance": 80, "transmission": {"kind": "elliptical", "eccentricity": 1}}' > g_bad1.json
 "$BIN" synthesize gears g_bad1.json --out g1_out > /dev/null 2> g.err
 [ $? -eq 2 ] && grep -q "g_bad1.json:transmission.eccentricity: expected a number in \[0, 1)" g.err

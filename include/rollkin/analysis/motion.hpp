@@ -12,8 +12,14 @@
 // At a cam or rolling pair, with A the link of the pair's first contour and B the link of its second one:
 //   c  contact point (world), t the unit tangent of the first contour there (its direction of increasing
 //      parameter, material on the left), n = -J t its outward normal: the common normal, pointing to B;
-//   pressure_angle = angle between the line of n and v_B(c), the velocity of c as a point of B (the driven
-//      member), in [0, pi/2] radians; NaN where v_B(c) vanishes (relative to the motion at the contact);
+//   pressure_angle = angle between the line of n and v_B(f), the velocity of the point f of B (the driven
+//      member) where the contact force enters it, in [0, pi/2] radians; NaN where v_B(f) vanishes (relative
+//      to the motion at the contact). f is c itself, except at a cam pair whose second contour is a circle:
+//      that stands for a roller turning on its pin at the circle's centre (the cam pair's sliding is the
+//      roller's turning, the same motion), and the force enters the follower there, so f is the centre
+//      (the textbook angle of a roller follower: between the common normal and the velocity of the roller's
+//      centre; docs/analysis.md). For a translating follower both give the same angle; for a turning one
+//      they differ. At a rolling pair the circle is the link's own rim and f = c;
 //   sliding = (v_B(c) - v_A(c)) . t, the relative tangential velocity of the two material points at c
 //      (its normal part is zero while the contact holds). The contact point travels along contour A at
 //      sigma_A udot and along contour B at sigma_B vdot (each along its own tangent; B's is -t, eq. 1),
@@ -44,6 +50,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace rollkin {
@@ -52,7 +59,9 @@ template <class S> struct ContactAnalysis {
   int pair = -1;             // index in Mechanism::pairs
   Vec2<S> point, tangent, normal;  // c, t, n (world)
   Vec2<S> velocity_a, velocity_b;  // v_A(c), v_B(c) per unit input
-  S pressure_angle;          // radians in [0, pi/2]; NaN where v_B(c) = 0
+  Vec2<S> force_point;       // f: where the pressure angle is measured on B (c, or a roller's centre; top of file)
+  Vec2<S> force_point_velocity;  // v_B(f) per unit input
+  S pressure_angle;          // radians in [0, pi/2]; NaN where v_B(f) = 0
   S sliding;                 // (v_B - v_A) . t
   S rolling_speed;           // (sigma_A udot - sigma_B vdot) / 2
   S slide_to_roll;           // sliding / rolling_speed; NaN where rolling_speed = 0
@@ -164,6 +173,14 @@ template <class S> VectorX<S> along_motion(const Mechanism<S>& m, const VectorX<
   return (S(8) * near - far) / (S(12) * h);
 }
 
+/// The point of B where the contact force enters it (top of this file): the centre of B's circle at a cam pair
+/// (a roller on its pin), else the contact point c.
+template <class S> Vec2<S> force_point(const Mechanism<S>& m, const Pair<S>& p, const PoseAnalysis<S>& motion, const Vec2<S>& c) {
+  if (p.kind != PairKind::Cam) return c;
+  const std::optional<Vec2<S>> centre = m.contours[p.contour_b].circle_centre();
+  return centre ? motion.link_pose[p.link_b].act(*centre) : c;
+}
+
 /// The contact quantities of one cam or rolling pair (see the top of this file).
 template <class S> ContactAnalysis<S> contact_analysis(const Mechanism<S>& m, int k, const PairState<S>& st,
                                                        const VectorX<S>& qdot, const PoseAnalysis<S>& motion) {
@@ -185,7 +202,10 @@ template <class S> ContactAnalysis<S> contact_analysis(const Mechanism<S>& m, in
   const S travel_b = b.speed * qdot(p.first_variable + 1);  // sigma_B vdot, along -t
   // Size of the motion at the contact, against which a zero is judged.
   const S motion_size = max(max(c.velocity_a.norm(), c.velocity_b.norm()), max(abs(travel_a), abs(travel_b)));
-  c.pressure_angle = negligible(S(c.velocity_b.norm()), motion_size) ? nan : angle_to_line(c.normal, c.velocity_b);
+  c.force_point = force_point(m, p, motion, c.point);
+  c.force_point_velocity = point_velocity(motion.link_velocity[p.link_b], c.force_point);
+  const S driven_speed = c.force_point_velocity.norm();
+  c.pressure_angle = negligible(driven_speed, max(motion_size, driven_speed)) ? nan : angle_to_line(c.normal, c.force_point_velocity);
   c.sliding = (c.velocity_b - c.velocity_a).dot(c.tangent);
   c.rolling_speed = (travel_a - travel_b) / S(2);
   c.slide_to_roll = negligible(c.rolling_speed, motion_size) ? nan : S(c.sliding / c.rolling_speed);

@@ -1,7 +1,10 @@
 // Point samples of a contour from a text file, one point per line:
 //
 //   # comment (anything after '#' is ignored), blank lines are skipped
-//   x y            <- an optional non-numeric header line, allowed as the first non-comment line only
+//   x y            <- an optional header line naming the columns, allowed as the first non-comment line only:
+//                     a contour's file names x then y (HeaderNames::XAndY: "theta r" would be polar samples read
+//                     as x y), a table (a law, a transmission, a scan) names its two columns as it likes
+//                     (HeaderNames::AnyTwo: "theta_deg,s_mm")
 //   0.0  1.25      separators: spaces, tabs, ',' or ';' (any mix, "1.5,2" and "1.5; 2" too)
 //   1e-3, -2.5
 //
@@ -25,6 +28,9 @@
 
 namespace rollkin::io {
 
+/// What a header line may name (file comment): x then y (a contour), or any two columns (a table).
+enum class HeaderNames { XAndY, AnyTwo };
+
 /// Points and the 1-based line of the file each was read from (for messages about a point).
 struct PointSamples {
   std::vector<Vec2<double>> points;
@@ -32,7 +38,12 @@ struct PointSamples {
 };
 
 /// Reads the file at `path` (see above) with the line of every point; throws InputError.
-PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale = 1.0);
+PointSamples read_point_samples(const std::string& path, std::size_t min_points, double scale = 1.0,
+                                HeaderNames columns = HeaderNames::XAndY);
+
+/// A table of two columns (a motion law, a gear transmission, a scan): the same reader, a header line naming
+/// any two columns allowed; the rows as points (first column, second column) with their lines.
+PointSamples read_table_file(const std::string& path, std::size_t min_rows);
 
 /// Reads the file at `path`; throws InputError if it cannot be opened, is malformed, or holds fewer than
 /// `min_points` points.
@@ -40,7 +51,8 @@ std::vector<Vec2<double>> read_point_file(const std::string& path, std::size_t m
 
 /// The same for text already in memory; `source` names it in messages.
 std::vector<Vec2<double>> parse_point_text(const std::string& text, const std::string& source,
-                                           std::size_t min_points, double scale = 1.0);
+                                           std::size_t min_points, double scale = 1.0,
+                                           HeaderNames columns = HeaderNames::XAndY);
 
 /// The text of a point file: comment lines, an optional header line "x y", one line "x y" per point with each
 /// number the shortest text that reads back to the same double (io::format_double). What it writes,

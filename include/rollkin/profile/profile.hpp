@@ -23,6 +23,7 @@
 #include "rollkin/profile/spline.hpp"
 #include "rollkin/se2.hpp"
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -77,6 +78,13 @@ template <class S> class Contour {
   /// The parameter range of the drawn contour, in this contour's (possibly reversed) parameter.
   const Domain<S>& domain() const { return domain_; }
   ParamKind parameter_kind() const { return visit([](const auto& p) { return p.parameter_kind(); }); }
+  /// The centre of a circle (or of an arc of one) in the link frame, which is its centre of curvature at every
+  /// point; none for every other kind. A circle touching a cam stands for a roller on its pin there
+  /// (analysis.hpp, the pressure angle).
+  std::optional<Vec2<S>> circle_centre() const {
+    if (!std::holds_alternative<Circle<S>>(shape_)) return std::nullopt;
+    return placement_.translation();
+  }
   /// Tangent discontinuities, in this contour's (possibly reversed) parameter.
   const std::vector<ContourCorner<S>>& corners() const { return corners_; }
   int continuity() const { return visit([](const auto& p) { return p.continuity(); }); }

@@ -83,7 +83,7 @@ EnvelopeProblem<double> cam_envelope_problem(const CamSpec& spec);
 CamProfile synthesise_cam(const CamSpec& spec);
 
 /// The scene that analyses the cam (docs/synthesis.md, "rollkin synthesize cam": PREFIX.json): revolute `cam` (theta), the
-/// follower on the pair `follower` (s or phi, zero at the law's zero), the cam pair `contact` of the profile
+/// follower on the pair `follower` (s or phi: the law's displacement itself, zero on the base circle), the cam pair `contact` of the profile
 /// (a closed `samples` contour read from `profile_file`, relative to the scene) and the follower's contour.
 nlohmann::ordered_json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string& profile_file);
 

@@ -7,13 +7,14 @@
 //     f(p) = p + 2 atan((k - 1) sin(p/2) cos(p/2) / (cos^2(p/2) + k sin^2(p/2))),
 //     f'(p) = k / (cos^2(p/2) + k^2 sin^2(p/2))       (tan(f/2) = k tan(p/2); f'(0) = k)
 //   sinusoidal: f(p) = p + k sin p, |k| < 1;
-//   table: points (phi1, phi2) over one turn of phi1; g = f - p is fitted by the periodic C2 spline of a
+//   table: points (phi1, phi2) over one turn of phi1; g = f - p is fitted by the periodic C4 spline of a
 //   motion law table (motion_law.hpp), f' = 1 + g'. The pair closes when f(p + 2 pi) = f(p) + 2 pi: the
 //   table's last phi2 must be its first + 2 pi (a last row at phi1 + 2 pi), else it is reported.
 #pragma once
 
 #include "rollkin/io/scene/reader.hpp"
 #include "rollkin/io/units.hpp"
+#include "rollkin/solve/report.hpp"
 #include "rollkin/synthesis/pitch_curves.hpp"
 #include "rollkin/synthesis/motion_law.hpp"
 
@@ -67,13 +68,15 @@ nlohmann::ordered_json gear_scene(const GearSpec& spec, const GearDesign& design
 struct GearRoundTrip {
   std::size_t poses = 0, solved = 0;
   double worst_deviation = 0, worst_deviation_at = 0;  // |gear2.phi - (-f(phi1))| (radians), phi1 there
-  std::vector<std::string> problems;
+  std::vector<SolveStatus> statuses;  // per pose, as `rollkin solve` reports them (round_trip.hpp)
+  std::vector<std::string> problems;  // limits met, poses whose status is not ok
 };
 
-/// Reads the scene back, sweeps gear1.phi over one turn at 997 + 1 angles and compares gear2.phi with -f.
+/// Reads the scene back, sweeps gear1.phi over one turn at 997 + 1 angles and compares gear2.phi with -f at
+/// every pose whose status is ok (synthesis/round_trip.hpp).
 GearRoundTrip gear_round_trip(const GearSpec& spec, const std::string& scene_file);
 
-/// The same for a scene already built.
-GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene);
+/// The same for a scene already built, at `inputs` (gear1.phi, radians; empty: the 997 + 1 angles).
+GearRoundTrip gear_round_trip(const GearSpec& spec, const io::Scene& scene, const std::vector<double>& inputs = {});
 
 }  // namespace rollkin::synthesis

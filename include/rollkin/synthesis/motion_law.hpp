@@ -19,15 +19,15 @@
 //     modified sine       y'' = C [sin(4 pi x) on [0, 1/8], cos(4 pi t / 3) on [1/8, 7/8],
 //                                  -cos(4 pi t) on [7/8, 1]]                      peak y' = 1.76, y'' = 5.528
 // A law may also be given as a function of theta (MotionLaw::from_function), e.g. in closed form.
-// A table of points (theta_i, s_i) over one turn is the periodic C2 cubic spline through them (moment form,
-// as in profile/spline.hpp but on theta itself).
+// A table of points (theta_i, s_i) over one turn, starting anywhere, is the periodic C4 quintic spline through
+// them (synthesis/periodic_spline.hpp).
 //
 // Continuity (check_continuity): at every join (and at 2 pi = 0) the one-sided values of s, s' and s'' are
 // compared; a jump in s is no motion at all, in s' an infinite acceleration, in s'' an infinite jerk.
 #pragma once
 
-#include "rollkin/profile/banded_solver.hpp"
 #include "rollkin/scalar.hpp"
+#include "rollkin/synthesis/periodic_spline.hpp"
 
 #include <algorithm>
 #include <array>
@@ -203,21 +203,24 @@ template <class S> class MotionLaw {
       throw std::invalid_argument("the lifts add up to " + std::to_string(static_cast<double>(s)) +
                                   ", not 0: the follower would not come back after one turn");
     segments.back().end = two_pi;
+    for (const auto& g : segments) law.ends_.push_back(g.end);
     law.segments_ = std::move(segments);
     return law;
   }
 
-  /// The periodic C2 cubic spline through (theta_i, s_i), theta_i increasing in [0, 2 pi); a last point at
-  /// 2 pi must repeat the first value and is dropped.
+  /// The periodic spline through (theta_i, s_i), theta_i increasing over less than one turn from any start
+  /// theta_0 (the law repeats every turn wherever its table starts); a last point at theta_0 + 2 pi must
+  /// repeat the first value and is dropped.
   static MotionLaw from_table(std::vector<S> theta, std::vector<S> s) {
     using std::abs;
     const S two_pi = S(2) * pi<S>();
     if (theta.size() != s.size()) throw std::invalid_argument("table: as many angles as displacements needed");
-    if (theta.size() >= 2 && abs(theta.back() - (theta.front() + two_pi)) <= S(64) * epsilon<S>() * two_pi) {
+    // Round-off of the angles' size (a table may start anywhere, e.g. at 720 degrees).
+    const S round_off = S(64) * epsilon<S>() * (two_pi + (theta.empty() ? S(0) : S(abs(theta.front()))));
+    if (theta.size() >= 2 && abs(theta.back() - (theta.front() + two_pi)) <= round_off) {
       if (abs(s.back() - s.front()) > S(1e-12) * (S(1) + abs(s.front())))
-        throw std::invalid_argument("table: the point at 2 pi (" + std::to_string(static_cast<double>(s.back())) +
-                                    ") does not repeat the point at the start (" +
-                                    std::to_string(static_cast<double>(s.front())) + ")");
+        throw std::invalid_argument("table: the point one turn after the first (" + std::to_string(static_cast<double>(s.back())) +
+                                    ") does not repeat the first (" + std::to_string(static_cast<double>(s.front())) + ")");
       theta.pop_back();
       s.pop_back();
     }
@@ -228,9 +231,7 @@ template <class S> class MotionLaw {
     if (!(theta.back() < theta.front() + two_pi))
       throw std::invalid_argument("table: the angles span more than one turn");
     MotionLaw law;
-    law.table_theta_ = std::move(theta);
-    law.table_s_ = std::move(s);
-    law.fit_table();
+    law.table_ = PeriodicSpline<S>(std::move(theta), std::move(s));
     return law;
   }
 
@@ -242,14 +243,14 @@ template <class S> class MotionLaw {
     return law;
   }
 
-  bool is_table() const { return !table_theta_.empty(); }
+  bool is_table() const { return !table_.empty(); }
   const std::vector<LawSegment<S>>& segments() const { return segments_; }
 
   /// s, s', s'', s''' at cam angle theta (any real: the law repeats every turn).
-  LawValue<S> operator()(const S& theta) const { return evaluate(wrap(theta), false); }
+  LawValue<S> operator()(const S& theta) const { return is_table() ? table_value(theta, false) : evaluate(wrap(theta), false); }
 
   /// The one-sided value just before theta (the previous segment's or span's end) at a join.
-  LawValue<S> left_of(const S& theta) const { return evaluate(wrap(theta), true); }
+  LawValue<S> left_of(const S& theta) const { return is_table() ? table_value(theta, true) : evaluate(wrap(theta), true); }
 
   /// Largest |s - s(0)|: the stroke.
   S stroke(int samples = 3600) const {
@@ -284,7 +285,7 @@ template <class S> class MotionLaw {
   /// Segment starts (or table points): where the law's pieces meet, in [0, 2 pi).
   std::vector<S> joins() const {
     std::vector<S> out;
-    if (is_table()) return table_theta_;
+    if (is_table()) return table_.knots();
     for (const auto& g : segments_) out.push_back(g.start);
     return out;
   }
@@ -298,12 +299,18 @@ template <class S> class MotionLaw {
     return w;
   }
 
+  /// A table's spline at theta (any real: periodic_spline.hpp takes it to the table's turn).
+  LawValue<S> table_value(const S& theta, bool left) const {
+    const std::array<S, 4> v = table_(theta, left);
+    return {v[0], v[1], v[2], v[3]};
+  }
+
   /// theta in [0, 2 pi); `left`: at a join take the piece that ends there (theta = 0 is the turn's end).
   LawValue<S> evaluate(const S& theta, bool left) const {
     if (function_) return function_(left && theta == S(0) ? S(S(2) * pi<S>()) : theta);
-    if (is_table()) return evaluate_table(theta, left);
-    std::size_t k = 0;
-    while (k + 1 < segments_.size() && (left ? theta > segments_[k].end : theta >= segments_[k].end)) ++k;
+    // The segment that holds theta (left: the one ending there), by binary search over the ends: O(log n).
+    const auto end = left ? std::lower_bound(ends_.begin(), ends_.end(), theta) : std::upper_bound(ends_.begin(), ends_.end(), theta);
+    std::size_t k = std::min(static_cast<std::size_t>(end - ends_.begin()), segments_.size() - 1);
     S t = theta;
     if (left && theta == S(0)) {
       k = segments_.size() - 1;
@@ -316,51 +323,9 @@ template <class S> class MotionLaw {
             g.lift * y[3] / (beta * beta * beta)};
   }
 
-  // ---- the periodic spline of a table: s = s_k + b_k t + M_k t^2/2 + (M_{k+1} - M_k) t^3 / (6 h) ----
-  S knot(std::size_t k) const {
-    const std::size_t n = table_theta_.size();
-    return k < n ? table_theta_[k] : table_theta_[k - n] + S(2) * pi<S>();
-  }
-  S h(std::size_t k) const { return knot(k + 1) - knot(k); }
-
-  void fit_table() {
-    const std::size_t n = table_theta_.size();
-    BandedSystem<S> system(n, 1, true);
-    std::vector<Vec2<S>> rhs(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t prev = (i + n - 1) % n, next = (i + 1) % n;
-      const S hb = h(prev), ha = h(i);
-      rhs[i] = Vec2<S>((table_s_[next] - table_s_[i]) / ha - (table_s_[i] - table_s_[prev]) / hb, S(0));
-      system.add(i, prev, hb / S(6));
-      system.add(i, i, (hb + ha) / S(3));
-      system.add(i, next, ha / S(6));
-    }
-    const std::vector<Vec2<S>> m = system.solve(rhs);
-    moments_.clear();
-    for (const auto& v : m) moments_.push_back(v.x());
-  }
-
-  LawValue<S> evaluate_table(const S& theta, bool left) const {
-    const std::size_t n = table_theta_.size();
-    S x = theta < table_theta_.front() ? S(theta + S(2) * pi<S>()) : theta;
-    if (left && x == table_theta_.front()) x += S(2) * pi<S>();
-    std::size_t k = n - 1;
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      if (left ? x <= table_theta_[i + 1] : x < table_theta_[i + 1]) {
-        k = i;
-        break;
-      }
-    const S hk = h(k), t = x - knot(k);
-    const S m0 = moments_[k], m1 = moments_[(k + 1) % n];
-    const S y0 = table_s_[k], y1 = table_s_[(k + 1) % n];
-    const S b = (y1 - y0) / hk - hk * (S(2) * m0 + m1) / S(6);
-    const S jerk = (m1 - m0) / hk;
-    return {y0 + t * (b + t * (m0 / S(2) + t * jerk / S(6))), b + t * (m0 + t * jerk / S(2)), m0 + t * jerk, jerk};
-  }
-
   std::vector<LawSegment<S>> segments_;
-  std::vector<S> start_s_;
-  std::vector<S> table_theta_, table_s_, moments_;
+  std::vector<S> start_s_, ends_;  // each segment's s at its start and its end angle (sorted: binary search)
+  PeriodicSpline<S> table_;  // a table's spline (periodic_spline.hpp)
   std::function<LawValue<S>(const S&)> function_;
 };
 
