@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 namespace rollkin::io {
@@ -15,14 +17,29 @@ namespace {
 /// The longest text put_double writes: the shortest round-trip form of a double takes at most 24 characters.
 constexpr std::size_t kMaxNumber = 24;
 
-/// Writes v at p as format_double does; returns one past its last character.
+/// The bits of empty_cell(): a quiet NaN whose payload spells no arithmetic result.
+constexpr std::uint64_t kEmptyCellBits = 0x7ff80000e3b7c311ULL;
+
+/// Writes v at p as format_double does (empty_cell(): nothing); returns one past its last character.
 char* put_double(char* p, double v) {
-  if (std::isnan(v)) return std::copy_n("nan", 3, p);
+  if (std::isnan(v)) return is_empty_cell(v) ? p : std::copy_n("nan", 3, p);
   if (std::isinf(v)) return v > 0 ? std::copy_n("inf", 3, p) : std::copy_n("-inf", 4, p);
   return std::to_chars(p, p + kMaxNumber, v).ptr;
 }
 
 }  // namespace
+
+double empty_cell() {
+  double v;
+  std::memcpy(&v, &kEmptyCellBits, sizeof v);
+  return v;
+}
+
+bool is_empty_cell(double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  return bits == kEmptyCellBits;
+}
 
 void append_double(std::string& out, double v) {
   char buf[kMaxNumber];

@@ -1,6 +1,6 @@
 // Small CSV writer for result tables: a header row, rows of doubles each written as the shortest text that
 // reads back (strtod) to the identical double (std::to_chars; non-finite values as nan / inf / -inf) and an
-// optional trailing text column (e.g. a solver status). Fields are quoted per RFC 4180 only when they
+// optional trailing text column; empty_cell() values as empty fields (e.g. a solver status). Fields are quoted per RFC 4180 only when they
 // contain a comma, a double quote, CR or LF. Lines end with '\n'. Files are written atomically
 // (io/atomic_file.hpp): PATH.tmp, then rename; on failure std::runtime_error naming PATH.
 //
@@ -19,6 +19,11 @@ namespace rollkin::io {
 /// "-inf" for non-finite values. append_double appends it to `out`.
 std::string format_double(double v);
 void append_double(std::string& out, double v);
+
+/// A value that is not defined (a reaction that redundant constraints leave open, docs/forces.md): a NaN
+/// with its own payload, written as an empty cell (a NaN from arithmetic stays "nan"; NumPy reads both as NaN).
+double empty_cell();
+bool is_empty_cell(double v);
 
 /// The field as it must appear in a CSV line: control characters written as escapes ("\n", "\r",
 /// "\t", "\x1b") so that a row is one line, then double-quoted with inner quotes doubled when it
