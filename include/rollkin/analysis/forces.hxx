@@ -159,7 +159,13 @@ template <class S> void solve_forces(ForceData<S>& data, PoseForces<S>& out) {
   data.qr.setThreshold(tolerance_once<S, 3, 4>());
   data.qr.compute(scaled);
   out.rank = static_cast<int>(data.qr.rank());
-  const MatrixX<S> x = data.qr.solve(rhs);
+  const Eigen::Index r = out.rank;
+  // The basic solution on the rank's pivots (Eigen's solve() keeps pivots down to eps, which a redundant
+  // column reaches only approximately): x = P [R11^-1 (Q^T rhs)_1; 0].
+  const MatrixX<S> qtb = data.qr.householderQ().adjoint() * rhs;
+  MatrixX<S> xp = MatrixX<S>::Zero(n, 2);
+  xp.topRows(r) = data.qr.matrixR().topLeftCorner(r, r).template triangularView<Eigen::Upper>().solve(qtb.topRows(r));
+  const MatrixX<S> x = data.qr.colsPermutation() * xp;
   // Consistent when the basic solution satisfies the equations (a singular pose: a rank lost in the rows).
   const MatrixX<S> residual = scaled * x - rhs;
   S size(0);
@@ -170,7 +176,6 @@ template <class S> void solve_forces(ForceData<S>& data, PoseForces<S>& out) {
   out.a = data.col_scale.cwiseProduct(x.col(0));
   out.b = data.col_scale.cwiseProduct(x.col(1));
   out.unique.assign(static_cast<std::size_t>(n), true);
-  const Eigen::Index r = out.rank;
   if (r == n) return;
   // z = P [-R11^-1 R12 c; c], c_k in [1, 2) spread by the golden ratio.
   VectorX<S> c(n - r);

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "rollkin/analysis.hpp"
-#include "rollkin/analysis/forces.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/continuation.hpp"
 
@@ -15,6 +14,5 @@ ROLLKIN_SOLVE_DATA_INSTANCES(extern template, mpfr50)
 ROLLKIN_POSITION_INSTANCES(extern template, mpfr50)
 ROLLKIN_CONTINUATION_INSTANCES(extern template, mpfr50)
 ROLLKIN_ANALYSIS_INSTANCES(extern template, mpfr50)
-ROLLKIN_FORCES_INSTANCES(extern template, mpfr50)
 
 }  // namespace rollkin
