@@ -14,7 +14,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/analysis/forces.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"

@@ -2,12 +2,12 @@
 // InputError naming the spec file and the JSON path, what is wrong and what is expected.
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/synthesis/cam.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <filesystem>

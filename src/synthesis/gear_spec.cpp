@@ -2,11 +2,11 @@
 // the JSON path.
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/synthesis/gears.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <filesystem>

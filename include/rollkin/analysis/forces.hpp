@@ -10,7 +10,7 @@
 //   revolute   Fx, Fy at the joint's point                                   2 unknowns
 //   prismatic  F_n normal to the guide at frame B's origin, the moment M     2 unknowns
 //   cam        N along the common normal n at the contact point c, with its Coulomb friction
-//              -mu sign(w sliding) N along t (analysis.hpp's t, n, sliding)   1 unknown
+//              -mu sign(w sliding) N along t (analysis/motion.hpp's t, n, sliding)   1 unknown
 //   rolling    N along n and F_t along t at c                                 2 unknowns
 //   driver     its effort: a torque (revolute) or a force along the guide (prismatic) on the pair's second link
 // Every wrench is the one the pair's first link A exerts on its second link B (B gets +W, A gets -W; the
@@ -29,7 +29,7 @@
 // efforts stay unique (virtual work) whenever the inputs set the mechanism's motion.
 #pragma once
 
-#include "rollkin/analysis.hpp"
+#include "rollkin/analysis/motion.hpp"
 #include "rollkin/dynamics.hpp"
 
 #include <Eigen/QR>
@@ -117,7 +117,7 @@ template <class S> struct PoseForces {
   int rank = 0;                         // of the equations' matrix
   std::vector<Vec2<S>> direction;       // per unknown: the world force on the pair's second link per unit value
   std::vector<S> friction_ratio;        // per pair: a cam pair's friction force along t per unit normal force
-  std::vector<ContactAnalysis<S>> contacts;  // per cam or rolling pair, in pair order (analysis.hpp)
+  std::vector<ContactAnalysis<S>> contacts;  // per cam or rolling pair, in pair order (analysis/motion.hpp)
   PoseAnalysis<S> motion;               // link poses, world twists, angular accelerations per unit input
   std::vector<Twist<S>> link_acceleration;   // per link: spatial acceleration (vdot, alpha) per unit input^2
 
@@ -166,7 +166,7 @@ template <class S> PoseForces<S> pose_forces(const Mechanism<S>& m, const Dynami
                                                    const std::vector<SE2<S>>&, const std::vector<Twist<S>>&,    \
                                                    const VectorX<S>&, const VectorX<S>&);
 
-// Compiled once for double, in src/solve/instantiate_analysis_double.cpp.
+// Compiled once for double, in src/analysis/instantiate_double.cpp.
 ROLLKIN_FORCES_INSTANCES(extern template, double)
 
 }  // namespace rollkin

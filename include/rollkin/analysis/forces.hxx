@@ -1,5 +1,5 @@
 // The bodies of analysis/forces.hpp, for the translation units that compile them
-// (src/solve/instantiate_analysis_double.cpp, src/solve/instantiate_mpfr50.cpp).
+// (src/analysis/instantiate_double.cpp, src/solve/instantiate_mpfr50.cpp).
 #pragma once
 
 #include "rollkin/analysis/forces.hpp"
@@ -202,7 +202,7 @@ PoseForces<S> pose_forces(const Mechanism<S>& m, const Dynamics<S>& dyn, const s
   using std::max;
   SolveData<S>& sd = data.solve;
   PoseForces<S> out;
-  // The accelerations per unit input (analysis.hpp, analyse_pose): J_u q'' = -gamma, inputs at constant rate.
+  // The accelerations per unit input (analysis/motion.hpp, analyse_pose): J_u q'' = -gamma, inputs at constant rate.
   sd.kin.reference = q;
   evaluate_and_factor(m, q, sd, m.equation_count());
   const VectorX<S> input_accels = VectorX<S>::Zero(static_cast<Eigen::Index>(m.drivers.size()));

@@ -1,6 +1,6 @@
 // Hertz line contact of two long bodies of face width L pressed together by the normal force N
 // (K. L. Johnson, Contact Mechanics, 1985, sections 4.2 and 5.6; docs/forces.md):
-//   1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,   1/R = kappa1 + kappa2 (the relative curvature, analysis.hpp)
+//   1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,   1/R = kappa1 + kappa2 (the relative curvature, analysis/motion.hpp)
 //   b  = sqrt(4 N R / (pi L E*))             half-width of the contact strip
 //   p0 = 2 N / (pi b L) = sqrt(N E* / (pi L R))   largest contact pressure
 // Below the surface on the line of symmetry, at depth z = zeta b (plane strain; McEwen's stresses):

@@ -4,14 +4,14 @@
 // needs, the peak drive effort and power, the massless links and the reactions redundant constraints leave
 // open.
 //
-//   const io::ForceTable table = ...;
-//   output::SweepForceReport f = output::sweep_forces(scene, sweep, rows, reference, speed);
-//   out.forces = &f.table;  // io::SweepOutput: the columns in the CSV
+//   output::SweepForceReport f = output::sweep_forces(scene, sweep, rows, sd.kin.reference, speed);
+//   io::SweepOutput out = run.output(rows);
+//   out.forces = &f.table;  // the columns in the CSV and the charts
 #pragma once
 
-#include "rollkin/io/force_table.hpp"
-#include "rollkin/io/scene.hpp"
-#include "rollkin/io/sweep_rows.hpp"
+#include "rollkin/output/force_table.hpp"
+#include "rollkin/io/scene/reader.hpp"
+#include "rollkin/output/sweep_rows.hpp"
 
 #include <string>
 #include <vector>

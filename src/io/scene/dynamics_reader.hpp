@@ -1,10 +1,10 @@
 // The scene's optional "dynamics" object (docs/forces.md), read after the mechanism is built (internal to
-// the scene reader, src/io/scene_reader.cpp). Every problem is an InputError at its JSON path.
+// the scene reader, src/io/scene/reader.cpp). Every problem is an InputError at its JSON path.
 #pragma once
 
-#include "../json_access.hpp"
+#include "../json/access.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 
 namespace rollkin::io {
 
