@@ -288,8 +288,8 @@ SweepForceReport sweep_forces(const io::Scene& scene, const Sweep& sweep, const 
       }
     }
   }
-  // Separation speeds, each located between the rows around its lowest row by golden-section search on the
-  // input (to 1e-9 of the input's range; docs/forces.md, "Separation speed").
+  // Separation speeds, each located between the rows around its lowest row (to 1e-9 of the input's range;
+  // docs/forces.md, "Separation speed").
   const double range = std::abs(sweep.to - sweep.from) * sweep.unit;
   PoseBetween between(m, reference, sweep.driver);
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
@@ -316,13 +316,29 @@ SweepForceReport sweep_forces(const io::Scene& scene, const Sweep& sweep, const 
         return ab ? zero_speed_squared(*ab) : kInf;
       };
       double lo = std::min(rows.input(r - 1), rows.input(r + 1)), hi = std::max(rows.input(r - 1), rows.input(r + 1));
-      const double golden = (std::sqrt(5.0) - 1) / 2;
-      double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = speed2(x1), f2 = speed2(x2);
-      while (hi - lo > 1e-9 * range) {
-        if (f1 <= f2) {
-          hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = speed2(x1);
-        } else {
-          lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = speed2(x2);
+      // The minimum of a smooth w^2(x) is flat: its value fixes its place only to the square root of round-off.
+      // Its slope's zero does better: the slope by central differences (step 1e-4 of the bracket, whose
+      // truncation and round-off both stay near 1e-11 of the bracket), its sign change bisected; where the slope
+      // does not change sign over the bracket (the minimum at a kink or where the pose cannot be solved),
+      // golden-section search on the values.
+      const double h = 1e-4 * (hi - lo);
+      const auto slope = [&](double x) { return (speed2(x + h) - speed2(x - h)) / (2 * h); };
+      double s_lo = slope(lo), s_hi = slope(hi);
+      if (s_lo < 0 && s_hi > 0) {
+        while (hi - lo > 1e-9 * range) {
+          const double mid = (lo + hi) / 2, s_mid = slope(mid);
+          if (!std::isfinite(s_mid)) break;
+          (s_mid < 0 ? lo : hi) = mid;
+        }
+      } else {
+        const double golden = (std::sqrt(5.0) - 1) / 2;
+        double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = speed2(x1), f2 = speed2(x2);
+        while (hi - lo > 1e-9 * range) {
+          if (f1 <= f2) {
+            hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = speed2(x1);
+          } else {
+            lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = speed2(x2);
+          }
         }
       }
       const double x = (lo + hi) / 2, fx = speed2(x);
