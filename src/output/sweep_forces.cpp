@@ -204,10 +204,10 @@ void pose_values(const Context& c, const PoseForces<double>& f, double x, double
   status = separation ? "separation" : slip ? "slip" : "";
 }
 
-/// The input x (internal units) as the summaries print it: "O.phi = 180 deg".
+/// The input x (internal units) as the summaries print it, to 8 digits as the limits are: "O.phi = 180 deg".
 std::string where(const Context& c, double x) {
   const std::string unit = c.scene.unit_label(c.sweep.variable);
-  return c.sweep.input + " = " + io::format_number(x / c.sweep.unit, 10) + (unit.empty() ? "" : " " + unit);
+  return c.sweep.input + " = " + io::format_number(x / c.sweep.unit, 8) + (unit.empty() ? "" : " " + unit);
 }
 
 std::string speed_text(const Context& c, double w) {
