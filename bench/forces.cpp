@@ -7,6 +7,7 @@
 #include "measure.hpp"
 #include "rollkin/analysis/forces.hpp"
 #include "rollkin/samples/mechanisms.hpp"
+#include "rollkin/solve/continuation.hpp"
 
 #include <CLI/CLI.hpp>
 
