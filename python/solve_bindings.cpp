@@ -18,6 +18,7 @@
 #include "rollkin/io/work_bound.hpp"
 #include "rollkin/output/centrode_files.hpp"
 #include "rollkin/output/sweep_files.hpp"
+#include "rollkin/output/sweep_forces.hpp"
 #include "rollkin/output/sweep_run.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/solve/continuation.hpp"
@@ -45,7 +46,7 @@ namespace {
 /// What to solve: the sweep's overrides (None: the scene's own "sweep") and its bound, and the extra columns.
 struct Request {
   rollkin::output::SweepRequest sweep;
-  bool analysis = false, rates = false;
+  bool analysis = false, rates = false, forces = false;
 };
 
 /// The keywords in the library's messages about a request.
@@ -82,6 +83,7 @@ struct Job {
   std::exception_ptr error;
   bool keep_result = false;    // keep `result` (Scene.write, Scene.centrodes)
   std::optional<rollkin::SweepResult<double>> result;
+  std::optional<rollkin::output::SweepForceReport> forces;  // with forces=True (write() writes them too)
 };
 
 /// Assembles and sweeps one scene and builds its table (on a worker thread: no Python here). Exceptions are
@@ -98,8 +100,17 @@ void run(Job& job, const Request& r, const std::atomic<bool>& cancel) {
     // byte for byte, so their table evaluates them as the CLI does.
     job.result = job.run.solve(sd, q, job.assembly, &cancel, !job.keep_result);
     if (cancel) return;
-    job.table = rollkin::io::sweep_columns(job.run.output(*job.result, r.analysis), r.rates);
-    if (!job.keep_result) job.result.reset();
+    // The --forces columns (docs/forces.md) at the scene's "dynamics" speed; exit 2 of the CLI: ValueError.
+    if (r.forces && job.assembly.ok())
+      job.forces = rollkin::output::sweep_forces(job.run.scene(), job.run.sweep(), *job.result, sd.kin.reference,
+                                                 job.run.scene().dynamics ? job.run.scene().dynamics->speed : 0.0);
+    rollkin::io::SweepOutput out = job.run.output(*job.result, r.analysis);
+    if (job.forces) out.forces = &job.forces->table;
+    job.table = rollkin::io::sweep_columns(out, r.rates);
+    if (!job.keep_result) {
+      job.result.reset();
+      job.forces.reset();
+    }
   } catch (...) {
     job.error = std::current_exception();
   }
@@ -176,7 +187,9 @@ std::vector<rollkin::output::OutputRequest> file_requests(const py::kwargs& file
 /// `rollkin solve` does.
 py::dict write(const PyScene& s, const Request& r, const std::vector<rollkin::output::OutputRequest>& outputs) {
   Job job = solved(start_run(s, r, outputs), r, true);
-  job.run.write(job.run.output(*job.result, r.analysis), rollkin::output::WriteOptions{r.rates, 1});
+  rollkin::io::SweepOutput out = job.run.output(*job.result, r.analysis);
+  if (job.forces) out.forces = &job.forces->table;
+  job.run.write(out, rollkin::output::WriteOptions{r.rates, 1});
   ColumnKeys keys;
   return to_dict(job, keys);
 }
@@ -288,7 +301,7 @@ py::list solve_many(const std::vector<PyScene>& scenes, const Request& r, int th
 
 /// The request of a call; max_steps checked by the rule the CLI's --max-steps follows (io/work_bound.hpp).
 Request request(std::optional<double> start, std::optional<double> stop, std::optional<double> step, bool analysis,
-                bool rates, double max_steps) {
+                bool rates, double max_steps, bool forces = false) {
   const std::string bad = rollkin::io::max_steps_problem(max_steps);
   if (!bad.empty()) throw py::value_error("max_steps: " + bad);
   Request r;
@@ -298,6 +311,7 @@ Request request(std::optional<double> start, std::optional<double> stop, std::op
   r.sweep.max_steps = max_steps;
   r.analysis = analysis;
   r.rates = rates;
+  r.forces = forces;
   return r;
 }
 
@@ -307,7 +321,9 @@ const char* const kSolveDoc = R"(Sweeps the scene's input and returns its table.
 
 start, stop, step: the sweep of the scene's input in the file's units (degrees for an angle in a "deg" scene);
 each None keeps the scene's "sweep" (a scene without one needs all three).
-analysis=True adds the contact analysis columns (as --analysis), rates=True the rate columns (as --rates).
+analysis=True adds the contact analysis columns (as --analysis), rates=True the rate columns (as --rates),
+forces=True the force columns at the scene's "dynamics" speed (as --forces, docs/forces.md; ValueError for a
+scene without "dynamics"; the statuses stay the sweep's: separation and slip are the CLI's).
 max_steps bounds the work like the CLI's --max-steps: a finite number >= 1 (ValueError otherwise); a sweep
 estimated to need more continuation sub-steps, or of more values, raises ValueError (docs/reliability.md).
 
@@ -366,19 +382,20 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
   scene
       .def("solve",
            [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
-              bool analysis, bool rates, double max_steps) {
-             return solve(s, request(start, stop, step, analysis, rates, max_steps));
-           },
-           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
-           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveDoc)
-      .def("write",
-           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
-              bool analysis, bool rates, double max_steps, const py::kwargs& files) {
-             return write(s, request(start, stop, step, analysis, rates, max_steps), file_requests(files));
+              bool analysis, bool rates, double max_steps, bool forces) {
+             return solve(s, request(start, stop, step, analysis, rates, max_steps, forces));
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps,
-           write_doc())
+           py::arg("forces") = false, kSolveDoc)
+      .def("write",
+           [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
+              bool analysis, bool rates, double max_steps, bool forces, const py::kwargs& files) {
+             return write(s, request(start, stop, step, analysis, rates, max_steps, forces), file_requests(files));
+           },
+           py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
+           py::arg("analysis") = false, py::arg("rates") = false, py::arg("max_steps") = rollkin::io::kDefaultMaxSteps,
+           py::arg("forces") = false, write_doc())
       .def("centrodes",
            [](const PyScene& s, const std::string& a, const std::string& b, std::optional<double> start,
               std::optional<double> stop, std::optional<double> step, const py::object& dxf, double max_steps) {
@@ -405,12 +422,12 @@ void bind_solving(py::module_& m, py::class_<PyScene>& scene) {
         "pairs: each name is a keyword of Scene.write and an option --name of `rollkin solve`.");
   m.def("solve_many",
         [](const std::vector<PyScene>& scenes, std::optional<double> start, std::optional<double> stop,
-           std::optional<double> step, int threads, bool analysis, bool rates, double max_steps) {
-          return solve_many(scenes, request(start, stop, step, analysis, rates, max_steps), threads);
+           std::optional<double> step, int threads, bool analysis, bool rates, double max_steps, bool forces) {
+          return solve_many(scenes, request(start, stop, step, analysis, rates, max_steps, forces), threads);
         },
         py::arg("scenes"), py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
         py::arg("threads") = 0, py::kw_only(), py::arg("analysis") = false, py::arg("rates") = false,
-        py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, kSolveManyDoc);
+        py::arg("max_steps") = rollkin::io::kDefaultMaxSteps, py::arg("forces") = false, kSolveManyDoc);
   m.def("_sweep_seconds",
         [](const PyScene& s, std::optional<double> start, std::optional<double> stop, std::optional<double> step,
            bool table) {

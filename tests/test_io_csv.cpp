@@ -158,3 +158,17 @@ BOOST_AUTO_TEST_CASE(numbers_take_the_fewest_digits_that_read_back) {
     }
   }
 }
+
+BOOST_AUTO_TEST_CASE(an_empty_cell_is_written_empty_and_only_it) {
+  // docs/reliability.md, "A force is determined or its cell is empty": io::empty_cell() is an empty field; a
+  // NaN from arithmetic (either sign, as x86 makes it) stays "nan", and so does a quiet NaN of the library.
+  const double zero = 0.0;
+  const double values[] = {1.5, rollkin::io::empty_cell(), zero / zero, -(zero / zero),
+                           std::numeric_limits<double>::quiet_NaN(), 2};
+  std::string row;
+  rollkin::io::append_csv_row(row, values, 6, nullptr);
+  BOOST_TEST(row == "1.5,,nan,nan,nan,2\n");
+  BOOST_TEST(rollkin::io::is_empty_cell(rollkin::io::empty_cell()));
+  BOOST_TEST(std::isnan(rollkin::io::empty_cell()));
+  BOOST_TEST(!rollkin::io::is_empty_cell(zero / zero));
+}

@@ -3,6 +3,8 @@
 #include "commands.hpp"
 
 #include "rollkin/output/sweep_file.hpp"
+#include "rollkin/analysis/forces.hpp"
+#include "rollkin/output/sweep_forces.hpp"
 #include "rollkin/solve/batch.hpp"
 #include "rollkin/analysis/interference.hpp"
 
@@ -93,7 +95,8 @@ struct SolveOptions {
   SweepRequest sweep;
   std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
   std::vector<std::pair<std::string, std::string>> files;  // (format, path) per output::sweep_formats(), "" not given
-  bool rates = false, analysis = false, verbose = false, interference = false;
+  bool rates = false, analysis = false, verbose = false, interference = false, forces = false;
+  std::string speed;  // --speed as written ("" : the scene's)
   int jobs = 0;  // scenes solved at once, or with one scene the threads that format its CSV (0: one per core)
 };
 
@@ -111,6 +114,14 @@ Command solve_command(CLI::App& rollkin) {
   app->add_flag("--analysis", o->analysis,
                 "add the contact analysis columns to the CSV and charts to the plot: pressure angle, sliding, "
                 "curvatures, link accelerations and jerks (docs/analysis.md)");
+  app->add_flag("--forces", o->forces,
+                "add the force columns to the CSV and the force summary: pair reactions, contact normal and friction "
+                "forces, contact stress, drive effort and power at the scene's \"dynamics\" speed; statuses separation "
+                "and slip (exit 1) (docs/forces.md)");
+  app->add_option("--speed", o->speed,
+                  "with --forces: the input speed instead of the scene's, a number and a unit: 500rpm, 52rad/s, 300deg/s, "
+                  "or for a length input 20mm/s (no unit: the scene's speed unit)")
+      ->type_name("V[UNIT]");
   app->add_flag("-v,--verbose", o->verbose,
                 "print the assembly report, how imported contours were converted and the design check (as 'rollkin check')");
   app->add_flag("--interference", o->interference,
@@ -150,6 +161,27 @@ std::vector<std::pair<std::string, std::string>> output_files(const SolveOptions
   return files;
 }
 
+/// The input speed of --forces (internal units per second): --speed, else the scene's "dynamics" speed.
+/// Exit 2 (ForcesUnavailable, UsageError) for a scene without dynamics or a speed that is not one.
+double forces_speed(const SolveOptions& o, const io::Scene& scene, const Sweep& sw) {
+  if (!scene.dynamics)
+    throw output::ForcesUnavailable(scene.file + ": --forces needs the scene's \"dynamics\" object (at least its \"speed\"; "
+                                    "docs/forces.md)");
+  try {
+    ForceLayout{scene.mechanism};  // refuses an input whose effort is not a joint's torque or force
+  } catch (const std::invalid_argument& e) {
+    throw output::ForcesUnavailable(scene.file + ": --forces: " + e.what());
+  }
+  if (o.speed.empty()) return scene.dynamics->speed;
+  const bool angular = scene.mechanism.variables[static_cast<std::size_t>(sw.variable)].kind != ParamKind::Length;
+  io::SpeedUnit unit;
+  try {
+    return io::parse_speed(o.speed, angular, scene.length, scene.speed_unit, unit) * unit.per_second;
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--speed: " + std::string(e.what()));
+  }
+}
+
 /// `rollkin solve` on one scene (o.sweep.scene, or `loaded` when already read): assembly, sweep, outputs,
 /// summary on `out`, one line per problem on `err`.
 int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ostream& out, std::ostream& err) {
@@ -160,6 +192,8 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   const Sweep& sw = run.sweep();
   const std::vector<double>& inputs = run.inputs();
   const Mechanism<double>& m = scene.mechanism;
+  if (!o.speed.empty() && !o.forces) throw UsageError("--speed sets the input speed of --forces; add --forces");
+  const double speed = o.forces ? forces_speed(o, scene, sw) : 0.0;
 
   SolveData<double> sd(m);
   VectorX<double> q;
@@ -170,10 +204,11 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   // Only the poses' values feed the outputs, the interference check and the design check: without them the
   // sweep keeps its summary alone (sweep_summary.hpp), no values, and on a fine grid interpolates the poses
   // between its sub-steps, each checked by its residual (dense output, solve/continuation.hpp).
-  const bool values_needed = run.writes_files() || o.interference || o.verbose;
+  const bool values_needed = run.writes_files() || o.interference || o.verbose || o.forces;
   std::optional<SweepResult<double>> result;
   std::optional<io::SweepFile> file;
   SweepSummary<double> found;
+  std::optional<output::SweepForceReport> forces;
   if (values_needed) {
     // The files alone read the poses in row order: kept in a temporary file, memory stays that of a summary
     // (output/sweep_file.hpp). The interference and design checks take the whole result in memory.
@@ -188,9 +223,15 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
       found = *file;
       rows.emplace(*file);
     }
+    if (o.forces && assembly.ok()) {
+      g_doing = "computing the forces";
+      forces = output::sweep_forces(scene, sw, *rows, sd.kin.reference, speed);
+    }
     // Everything is computed before anything is written, and then written all or nothing.
     g_doing = "writing the output files";
-    run.write(run.output(*rows, o.analysis), output::WriteOptions{o.rates, o.jobs});
+    io::SweepOutput table = run.output(*rows, o.analysis);
+    if (forces) table.forces = &forces->table;
+    if (run.writes_files()) run.write(table, output::WriteOptions{o.rates, o.jobs});
   } else {
     found = run.summary(sd, q, assembly);
   }
@@ -220,13 +261,18 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   }
   if (!found.singular.empty()) summary << ", " << found.singular.size() << " singular pose(s)";
   out << summary.str() << "\n";
+  if (forces) {
+    for (const auto& l : forces->summary) out << "  " << l << "\n";
+    problems.insert(problems.end(), forces->problems.begin(), forces->problems.end());
+  }
   if (o.verbose) {
     const DesignReport design = design_report(scene, sw, *result);
     for (const auto& l : design.section) out << l << "\n";
     for (const auto& f : design.findings) out << "  " << f << "\n";
   }
   for (const auto& p : problems) err << scene.file << ": " << p << "\n";
-  return solved == inputs.size() && assembly.ok() && clashes.empty() ? 0 : 1;
+  const bool forces_ok = !forces || !forces->separation_or_slip;
+  return solved == inputs.size() && assembly.ok() && clashes.empty() && forces_ok ? 0 : 1;
 }
 
 /// The options of each of several scenes: every {scene} in every output name replaced by the scene file's

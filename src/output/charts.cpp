@@ -1,5 +1,5 @@
 // The --plot chart (plot_svg, rollkin/output/charts.hpp): the pair variables against the input and, with --analysis, the
-// contact analysis charts, stacked in one SVG document.
+// contact analysis charts, with --forces the force charts (docs/forces.md), stacked in one SVG document.
 #include "rollkin/output/charts.hpp"
 
 #include "rollkin/analysis/motion.hpp"
@@ -9,6 +9,7 @@
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -217,6 +218,52 @@ std::vector<io::SvgChart> analysis_charts(const SweepOutput& ctx, const InputAxi
   return charts_from_specs(ctx, axis, specs);
 }
 
+/// The --forces charts (docs/forces.md): one per quantity, a series per column of the force table whose name
+/// ends with it; empty cells (reactions not unique) leave gaps.
+std::vector<io::SvgChart> force_charts(const SweepOutput& ctx, const InputAxis& axis) {
+  const io::ForceTable& t = *ctx.forces;
+  const std::string& len = ctx.scene.length_unit;
+  const bool angular = ctx.scene.mechanism.variables[static_cast<std::size_t>(ctx.sweep.variable)].kind != ParamKind::Length;
+  struct Quantity {
+    std::string suffix, title, y_label;
+  };
+  const std::vector<Quantity> quantities = {
+      {".normal_force", "contact normal force (positive: pressed together)", "force [N]"},
+      {".friction_force", "friction force at the contact pairs", "force [N]"},
+      {".friction_needed", "friction coefficient the rolling pairs need", "|tangential| / normal"},
+      {".contact_pressure", "Hertz contact pressure", "pressure [N/" + len + "^2]"},
+      {".max_shear", "largest shear stress below the surface", "stress [N/" + len + "^2]"},
+      {".effort", "drive effort", angular ? "torque [N " + len + "] or force [N]" : "force [N]"},
+      {"power", "drive power", "power [W]"},
+  };
+  const int width = 760, height = 360;
+  std::vector<io::SvgChart> charts;
+  for (const Quantity& q : quantities) {
+    std::vector<std::size_t> cols;
+    for (std::size_t c = 0; c < t.columns(); ++c) {
+      const std::string& n = t.names[c];
+      if (n.size() >= q.suffix.size() && n.compare(n.size() - q.suffix.size(), q.suffix.size(), q.suffix) == 0) cols.push_back(c);
+    }
+    if (cols.empty()) continue;
+    io::SvgChart chart(width, height);
+    chart.set_title(base_name(ctx.scene.file) + ": " + q.title).set_x_label(axis_label(ctx, ctx.sweep.variable))
+        .set_y_label(q.y_label).set_legend(io::LegendPosition::Outside);
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      io::SeriesReducer reduced = axis.series(width);
+      for (std::size_t r = 0; r < ctx.result.size(); ++r) {
+        const double v = t.row(r)[cols[k]];
+        reduced.add(axis.at(r), std::isnan(v) ? kNaN : v);
+      }
+      io::ChartSeries s = chart_series(reduced);
+      s.name = t.names[cols[k]];
+      s.color = io::palette_color(k);
+      chart.add_series(std::move(s));
+    }
+    charts.push_back(std::move(chart));
+  }
+  return charts;
+}
+
 }  // namespace
 
 std::string plot_svg(const SweepOutput& ctx) {
@@ -262,6 +309,8 @@ std::string plot_svg(const SweepOutput& ctx) {
   if (n_lengths > 0) charts.push_back(std::move(lengths));
   if (ctx.analysis)
     for (io::SvgChart& c : analysis_charts(ctx, axis)) charts.push_back(std::move(c));
+  if (ctx.forces)
+    for (io::SvgChart& c : force_charts(ctx, axis)) charts.push_back(std::move(c));
   if (charts.empty()) charts.push_back(std::move(angles));  // a scene whose only variable is the input
   return stack_charts(charts);
 }

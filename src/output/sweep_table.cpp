@@ -78,6 +78,7 @@ std::vector<std::string> column_names(const SweepOutput& out, bool rates, std::v
     cols.push_back(l.name + ".angle");
   }
   if (out.analysis) analysis_columns(m, input, cols);
+  if (out.forces) cols.insert(cols.end(), out.forces->names.begin(), out.forces->names.end());
   cols.push_back("residual");
   return cols;
 }
@@ -151,7 +152,15 @@ void row_values(const SweepOutput& out, bool rates, const std::vector<int>& othe
     else
       for (std::size_t k = analysis_column_count(m); k > 0; --k) row.push_back(kNaN);
   }
+  if (out.forces)
+    for (std::size_t c = 0; c < out.forces->columns(); ++c) row.push_back(out.forces->row(r)[c]);
   row.push_back(ok ? w.rows.residual(r) : kNaN);
+}
+
+/// Row r's status: the sweep's, or `separation` / `slip` from the forces of a solved pose.
+std::string row_status(const SweepOutput& out, std::size_t r) {
+  if (out.forces && !out.forces->status[r].empty()) return out.forces->status[r];
+  return to_string(out.result.status(r));
 }
 
 /// What the rows of one CSV table share.
@@ -171,7 +180,7 @@ void append_table_row(const CsvRows& t, std::size_t r, RowWork& w, std::string& 
   w.row.clear();
   row_values(t.out, t.rates, t.others, r, w, w.row);
   if (w.row.size() != t.columns) throw std::logic_error("write_sweep_csv: a row's values do not match its columns");
-  const std::string status = to_string(t.out.result.status(r));
+  const std::string status = row_status(t.out, r);
   append_csv_row(text, w.row.data(), w.row.size(), &status);
 }
 
@@ -228,7 +237,7 @@ SweepTable sweep_table(const SweepOutput& out, bool rates) {
   t.names = c.names;
   for (std::size_t k = 0; k < c.names.size(); ++k) t.columns.emplace_back(c.column(k), c.column(k) + c.rows());
   t.status.reserve(c.rows());
-  for (SolveStatus s : c.status) t.status.push_back(to_string(s));
+  for (std::size_t r = 0; r < c.rows(); ++r) t.status.push_back(row_status(out, r));
   return t;
 }
 

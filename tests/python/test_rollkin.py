@@ -93,6 +93,29 @@ def test_analysis_and_rates_equal_cli_csv(example, tmp_path):
     assert_table_equals_csv(scene.solve(start, stop, step, analysis=True, rates=True), header, rows)
 
 
+FORCE_SCENES = sorted((SRC / "tests" / "data" / "forces").glob("*.json"))
+
+
+@pytest.mark.parametrize("scene_file", FORCE_SCENES, ids=lambda p: p.stem)
+def test_forces_equal_cli_csv(scene_file, tmp_path):
+    # The force columns of Scene.solve(forces=True) and solve_many(forces=True) are the CLI's --forces columns
+    # (docs/forces.md); the CLI's statuses separation and slip are its own (the table keeps the sweep's).
+    scene = rollkin.load_scene(scene_file)
+    start, stop, step = sweep_of(scene)
+    header, rows, _ = cli_csv(scene_file, start, stop, step, tmp_path, "--forces")
+    assert "power" in header
+    status = header.index("status")
+    for r in rows:
+        r[status] = "ok" if r[status] in ("separation", "slip") else r[status]
+    assert_table_equals_csv(scene.solve(start, stop, step, forces=True), header, rows)
+    assert_table_equals_csv(rollkin.solve_many([scene], start, stop, step, forces=True)[0], header, rows)
+
+
+def test_forces_without_dynamics_is_a_value_error():
+    with pytest.raises(ValueError, match="dynamics"):
+        rollkin.load_scene(PAPER).solve(forces=True)
+
+
 def test_solve_with_a_sweep_other_than_the_scenes(tmp_path):
     scene = rollkin.load_scene(PAPER)
     header, rows, _ = cli_csv(PAPER, 80, -20, -2.5, tmp_path)

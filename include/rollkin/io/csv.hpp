@@ -1,6 +1,6 @@
 // Small CSV writer for result tables: a header row, rows of doubles each written as the shortest text that
 // reads back (strtod) to the identical double (io::format_double, io/format.hpp; non-finite values as nan /
-// inf / -inf) and an optional trailing text column (e.g. a solver status). Fields are quoted per RFC 4180
+// inf / -inf) and an optional trailing text column (e.g. a solver status); io::empty_cell() values as empty fields. Fields are quoted per RFC 4180
 // only when they contain a comma, a double quote, CR or LF. Lines end with '\n'. Files are written atomically
 // (io/atomic_file.hpp): PATH.tmp, then rename; on failure std::runtime_error naming PATH.
 //

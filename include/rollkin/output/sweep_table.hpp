@@ -8,6 +8,7 @@
 //   std::string text = table.csv();
 #pragma once
 
+#include "rollkin/output/force_table.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/scene/reader.hpp"
 #include "rollkin/output/sweep_rows.hpp"
@@ -41,6 +42,9 @@ struct SweepOutput {
   // thread that builds it, and not kept (kept, the analyses take about 1 KB per pose: 150 MB for 150,001
   // poses of the paper example).
   bool analysis = false;
+  // The --forces columns (docs/forces.md), after the analysis columns; their statuses `separation` and `slip`
+  // replace `ok`. Not owned.
+  const ForceTable* forces = nullptr;
 };
 
 /// The unit of the input column: degrees for an angle, the scene's length unit for a length, "" otherwise.

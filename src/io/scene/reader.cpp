@@ -5,6 +5,7 @@
 
 #include "contours/contour_reader.hpp"
 #include "../json/access.hpp"
+#include "dynamics_reader.hpp"
 
 #include "rollkin/builder.hpp"
 #include "rollkin/geometry/contact.hpp"
@@ -36,7 +37,7 @@ class SceneReader {
   Scene read() {
     Scene scene;
     scene.file = file_;
-    js_.object(root_, "", {"units", "description", "links", "pairs", "inputs", "sweep"});
+    js_.object(root_, "", {"units", "description", "links", "pairs", "inputs", "sweep", "dynamics"});
     read_units(scene);
     read_links(scene);
     read_pairs();
@@ -46,6 +47,7 @@ class SceneReader {
     fill_guess(scene);
     locate_missing_contacts(scene);
     read_sweep(scene);
+    if (const json* d = js_.get(root_, "dynamics")) read_dynamics(*d, js_, scene);
     return scene;
   }
 

@@ -15,7 +15,9 @@
 
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/io/json/document.hpp"
+#include "rollkin/io/speed.hpp"
 #include "rollkin/io/units.hpp"
+#include "rollkin/dynamics.hpp"
 #include "rollkin/kinematics.hpp"
 #include "rollkin/reference.hpp"
 #include "rollkin/solve/sweep_grid.hpp"
@@ -38,6 +40,8 @@ struct Scene {
   std::vector<std::string> inputs;   // full names of the drivers, in "inputs" order
   std::vector<std::string> files_read;  // every contour file read (point files, SVG), as opened
   std::vector<std::string> notes;       // one line per imported contour (SVG, DXF): its unit conversion (--verbose)
+  std::optional<Dynamics<double>> dynamics;  // the scene's "dynamics" (docs/forces.md), if any
+  SpeedUnit speed_unit;                      // the unit its speed was given in (summaries print speeds in it)
 
   /// Internal units per file unit of variable i: radians_per(angle_unit) for angles (pi/180 in a "deg"
   /// file), else 1.
