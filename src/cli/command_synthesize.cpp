@@ -5,10 +5,13 @@
 
 #include "rollkin/io/csv.hpp"
 #include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/point_file.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
 #include "rollkin/synthesis/scene_envelope.hpp"
+#include "rollkin/synthesis/synthesis_files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -31,7 +34,6 @@ struct SynthesizeEnvelopeOptions {
   std::string contour;             // B.name
   std::string out;
   std::optional<double> tolerance, start;
-  std::string tolerance_text, start_text;
 };
 int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o);
 
@@ -45,7 +47,7 @@ Command synthesize_command(CLI::App& rollkin) {
   cam->add_option("SPEC", o->spec, "the cam spec (JSON: base_radius, rotation, follower, contact, law, tolerance)")
       ->required()
       ->type_name("SPEC.json");
-  add_output(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
+  add_prefix(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
       ->required()
       ->type_name("PREFIX");
   cam->footer(
@@ -53,8 +55,8 @@ Command synthesize_command(CLI::App& rollkin) {
       "relative to the turning cam, sampled so that the fitted spline is within a sixteenth of the tolerance of\n"
       "the true profile. Writes PREFIX.txt (closed point file, the cam's frame), PREFIX.dxf (one SPLINE),\n"
       "PREFIX.svg (cam and follower at the law's start) and PREFIX.json (the scene: revolute 'cam' theta,\n"
-      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing. Then it reads PREFIX.json, solves\n"
-      "one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
+      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing: before any is committed it reads\n"
+      "PREFIX.json back (with the point file it names), solves one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
       "pressure angle and the smallest radius of curvature of the profile at the contacts.\n"
       "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
       "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
@@ -62,7 +64,7 @@ Command synthesize_command(CLI::App& rollkin) {
   auto g = std::make_shared<SynthesizeCamOptions>();
   CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
   gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
-  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf and PREFIX.json (scene)")
+  add_prefix(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf and PREFIX.json (scene)")
       ->required()
       ->type_name("PREFIX");
   gears->footer(
@@ -78,11 +80,12 @@ Command synthesize_command(CLI::App& rollkin) {
   add_sweep_options(*env, e->sweep);
   env->add_option("--links", e->links, "the links A (carries the envelope) and B (carries the contour)")->expected(2)->required()->type_name("A B");
   env->add_option("--contour", e->contour, "B's contour, as the scene's pairs name it (B.name)")->required()->type_name("B.NAME");
-  add_output(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
-  add_number(*env, "--tolerance", e->tolerance, e->tolerance_text,
-             "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
-  add_number(*env, "--start", e->start, e->start_text,
-             "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
+  add_prefix(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
+  // Checked by the library's rule that Python's envelope() shares (synthesis/scene_envelope.hpp).
+  add_checked_number(*env, "--tolerance", e->tolerance, synthesis::envelope_tolerance_problem,
+                     "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
+  add_checked_number(*env, "--start", e->start, synthesis::envelope_start_problem,
+                     "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
   env->footer(
       "Solves the sweep, interpolates B's pose relative to A (cubic Hermite in the input, from poses and rates)\n"
       "and computes the envelope of B's contour from the equation of meshing n . v_rel = 0, sampled until the\n"
@@ -99,78 +102,6 @@ Command synthesize_command(CLI::App& rollkin) {
 }
 
 namespace {
-
-/// A point file (docs/scene_format.md, "Point files"): the comment line `what`, then one "x y" line per point,
-/// each number the shortest text that reads back to the same double.
-std::string points_text(const std::string& what, const std::vector<Vec2<double>>& points) {
-  std::string out = "# " + what + "\n";
-  for (const auto& p : points) {
-    io::append_double(out, p.x());
-    out += ' ';
-    io::append_double(out, p.y());
-    out += '\n';
-  }
-  return out;
-}
-
-std::string profile_text(const synthesis::CamSpec& spec, const std::vector<Vec2<double>>& points) {
-  return points_text("cam profile written by rollkin synthesize cam from " + spec.file +
-                         "\n# closed, counter-clockwise, in the cam's frame (the cam turns about the origin); units: " +
-                         (spec.length_label.empty() ? std::string("as the spec") : spec.length_label),
-                     points);
-}
-
-/// A follower given as any contour, at the law's start in the world: 400 points of its domain placed in the
-/// follower's frame (translating: the world's axes at the follower's origin; oscillating: the arm's at the pivot).
-std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  std::vector<Vec2<double>> out;
-  if (spec.contact != synthesis::FollowerContact::Contour) return out;
-  const Contour<double>& c = spec.follower_shape->mechanism.contours[0];
-  const SE2<double> place(spec.motion == synthesis::FollowerMotion::Oscillating ? spec.start_angle : 0.0, profile.follower_origin);
-  const int n = 400;
-  for (int i = 0; i <= n; ++i) out.push_back(place.act(c.jet(c.domain().lo + (c.domain().hi - c.domain().lo) * i / n, 0).p));
-  return out;
-}
-
-/// The cam (filled profile) and the follower at the law's start, y up, the cam centre marked.
-std::string drawing_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
-  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
-  auto grow = [&](const Vec2<double>& p, double r) {
-    lo_x = std::min(lo_x, p.x() - r);
-    hi_x = std::max(hi_x, p.x() + r);
-    lo_y = std::min(lo_y, p.y() - r);
-    hi_y = std::max(hi_y, p.y() + r);
-  };
-  for (const auto& p : profile.points) grow(p, 0);
-  const Vec2<double> f = profile.follower_origin;
-  const std::vector<Vec2<double>> shape = follower_contour_points(spec, profile);
-  if (spec.contact == synthesis::FollowerContact::Roller) grow(f, spec.roller_radius);
-  else if (spec.contact == synthesis::FollowerContact::Flat) grow(f, profile.face_half_length);
-  for (const auto& p : shape) grow(p, 0);
-  if (spec.motion == synthesis::FollowerMotion::Oscillating) grow(spec.pivot, 0);
-  const double margin = 0.05 * std::max(hi_x - lo_x, hi_y - lo_y);
-  std::ostringstream s;
-  s.precision(10);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << lo_x - margin << " " << -hi_y - margin << " "
-    << hi_x - lo_x + 2 * margin << " " << hi_y - lo_y + 2 * margin << "\">\n<g transform=\"scale(1,-1)\" fill=\"none\" "
-    << "stroke=\"black\" stroke-width=\"" << margin / 10 << "\">\n<path id=\"cam\" fill=\"#dde\" d=\"M";
-  for (const auto& p : profile.points) s << " " << p.x() << " " << p.y();
-  s << " Z\"/>\n";
-  if (spec.contact == synthesis::FollowerContact::Contour) {
-    s << "<path id=\"follower\" d=\"M";
-    for (const auto& p : shape) s << " " << p.x() << " " << p.y();
-    s << "\"/>\n";
-  } else if (spec.contact == synthesis::FollowerContact::Roller)
-    s << "<circle id=\"roller\" cx=\"" << f.x() << "\" cy=\"" << f.y() << "\" r=\"" << spec.roller_radius << "\"/>\n";
-  else
-    s << "<line id=\"face\" x1=\"" << f.x() - profile.face_half_length << "\" y1=\"" << f.y() << "\" x2=\""
-      << f.x() + profile.face_half_length << "\" y2=\"" << f.y() << "\"/>\n";
-  if (spec.motion == synthesis::FollowerMotion::Oscillating && spec.contact != synthesis::FollowerContact::Contour)
-    s << "<line id=\"arm\" x1=\"" << spec.pivot.x() << "\" y1=\"" << spec.pivot.y() << "\" x2=\"" << f.x() << "\" y2=\""
-      << f.y() << "\"/>\n";
-  s << "<circle id=\"cam_centre\" cx=\"0\" cy=\"0\" r=\"" << margin / 5 << "\"/>\n</g>\n</svg>\n";
-  return s.str();
-}
 
 /// The law's unit for messages: the length unit, or the angle unit of an oscillating follower.
 std::string law_value(const synthesis::CamSpec& spec, double v) {
@@ -198,8 +129,13 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
               << io::format_number(j.left) << " to " << io::format_number(j.right) << "\n";
   }
 
+  // The library's messages of the synthesis named no key: each step says here which input governs it.
+  const StepInput sizes{o.spec, "base_radius, follower, contact, law, tolerance",
+                        "the cam is sampled until its spline is within \"tolerance\" (default 1e-9 of the stroke) of the "
+                        "true profile; give a larger \"tolerance\", or sizes (base_radius, roller, offset, lift) that differ by "
+                        "fewer orders of magnitude"};
   g_doing = "computing the cam profile";
-  const synthesis::CamProfile profile = synthesis::synthesise_cam(spec);
+  const synthesis::CamProfile profile = from_input(sizes, [&] { return synthesis::synthesise_cam(spec); });
   if (!profile.envelope.defects.empty()) {
     for (const auto& d : profile.envelope.defects)
       std::cerr << o.spec << ": undercut: at cam angle " << angle_value(spec, d.t) << " " << d.what
@@ -210,17 +146,19 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   }
 
   g_doing = "building the output files";
-  const std::string profile_name = std::filesystem::path(txt).filename().string();
-  outputs.set(i_txt, profile_text(spec, profile.points));
-  SampledProfile<double> spline(profile.points, SplineOptions<double>{true});
-  outputs.set(i_dxf, io::dxf_text({io::spline_of(spline, "CAM")}, spec.length_label));
-  outputs.set(i_svg, drawing_svg(spec, profile));
-  outputs.set(i_scene, synthesis::cam_scene(spec, profile, profile_name).dump(2) + "\n");
-  g_doing = "writing the output files";
-  outputs.commit();
-
-  g_doing = "analysing the cam (round trip)";
-  const synthesis::CamRoundTrip rt = synthesis::cam_round_trip(spec, scene_file);
+  synthesis::CamFiles files = from_input(sizes, [&] { return synthesis::cam_files(spec, profile, std::filesystem::path(txt).filename().string()); });
+  outputs.set(i_txt, std::move(files.profile));
+  outputs.set(i_dxf, std::move(files.dxf));
+  outputs.set(i_svg, std::move(files.svg));
+  outputs.set(i_scene, std::move(files.scene));
+  // The round trip reads the files before they are committed (io::OutputSet::commit(check)): when it fails,
+  // nothing is written, and a file of this run that rollkin's reader refuses is an internal error (exit 4).
+  synthesis::CamRoundTrip rt;
+  outputs.commit([&] {
+    g_doing = "analysing the cam (round trip)";
+    rt = synthesis::cam_round_trip(spec, scene_file);
+    g_doing = "writing the output files";
+  });
   std::cout << o.spec << ": profile of " << profile.points.size() << " points (spline within "
             << io::format_number(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
             << dxf << ", " << svg << ", " << scene_file << "\n";
@@ -252,22 +190,25 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
               << ", not one turn (gear 2 would not come back to its start after a turn of gear 1); nothing written\n";
     return 1;
   }
+  const StepInput curves{o.spec, "transmission, centre_distance, tolerance",
+                         "the pitch curves are sampled until their splines are within \"tolerance\" (default 1e-9 of a turn) "
+                         "times centre_distance of the true curves, and gear 2 must turn as long as gear 1 does (f' > 0 at "
+                         "every angle); give a larger \"tolerance\" or a transmission whose speed ratio varies less"};
   g_doing = "computing the pitch curves";
-  const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
-  const std::string what = "pitch curve written by rollkin synthesize gears from " + spec.file + ", closed, counter-clockwise, ";
-  outputs.set(i1, points_text(what + "gear 1 (pivot at the origin)", d.pair.gear1));
-  outputs.set(i2, points_text(what + "gear 2 (pivot at the origin of its frame)", d.pair.gear2));
-  SplineOptions<double> closed;
-  closed.closed = true;
-  outputs.set(i_dxf, io::dxf_text({io::spline_of(SampledProfile<double>(d.pair.gear1, closed), "GEAR1"),
-                                   io::spline_of(SampledProfile<double>(d.pair.gear2, closed), "GEAR2")},
-                                  spec.length_label));
-  outputs.set(i_scene, synthesis::gear_scene(spec, d, std::filesystem::path(f1).filename().string(),
-                                             std::filesystem::path(f2).filename().string()).dump(2) + "\n");
-  g_doing = "writing the output files";
-  outputs.commit();
-  g_doing = "analysing the gears (round trip)";
-  const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
+  const synthesis::GearDesign d = from_input(curves, [&] { return synthesis::synthesise_gears(spec); });
+  synthesis::GearFiles files = from_input(curves, [&] {
+    return synthesis::gear_files(spec, d, std::filesystem::path(f1).filename().string(), std::filesystem::path(f2).filename().string());
+  });
+  outputs.set(i1, std::move(files.gear1));
+  outputs.set(i2, std::move(files.gear2));
+  outputs.set(i_dxf, std::move(files.dxf));
+  outputs.set(i_scene, std::move(files.scene));
+  synthesis::GearRoundTrip rt;  // read back before anything is committed, as the cam's
+  outputs.commit([&] {
+    g_doing = "analysing the gears (round trip)";
+    rt = synthesis::gear_round_trip(spec, scene_file);
+    g_doing = "writing the output files";
+  });
   std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
             << io::format_number(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
             << scene_file << "\n";
@@ -297,22 +238,28 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   const int contour = m.find_contour(o.contour);
   if (contour < 0 || m.contours[contour].link() != b)
     throw UsageError("--contour: no contour \"" + o.contour + "\" on link \"" + o.links[1] + "\" (give it as " + o.links[1] + ".NAME)");
-  if (o.tolerance && !(*o.tolerance > 0)) throw UsageError("--tolerance: expected a distance > 0, got " + o.tolerance_text);
   SolveData<double> sd(m);
   VectorX<double> q;
   g_doing = "assembling the mechanism";
   const SolveReport<double> assembly = run.assemble(sd, q);
   g_doing = "solving the sweep";
   const SweepResult<double> result = run.solve(sd, q, assembly);
-  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, sw, l) << "\n";
+  const SweepSummary<double> found = summarise(result);
+  for (const auto& p : sweep_problems(scene, sw, found, run.inputs())) std::cerr << scene.file << ": " << p << "\n";
   g_doing = "computing the envelope";
-  const synthesis::SweepMotion motion(m, result, a, b);
-  const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
   const double tol = o.tolerance ? *o.tolerance : 1e-9 * m.length_scale;
-  const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  const StepInput motion_input{scene.file, "sweep",
+                               "the envelope needs B's motion at every pose of the sweep and a spline within --tolerance (default "
+                               "1e-9 of the scene's size) of it; give --from/--to within the poses that solve (limits above), "
+                               "--start near the contact, or a larger --tolerance"};
+  const synthesis::Envelope<double> env = from_input(motion_input, [&] {
+    const synthesis::SweepMotion motion(m, result, a, b);
+    const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
+    return synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  });
   const std::vector<Vec2<double>> pts = env.points();
   run.set_output("--out (points)", [&] {
-    return points_text("envelope of " + o.contour + " in the frame of link " + o.links[0] + ", written by rollkin synthesize envelope from " +
+    return io::point_file_text("envelope of " + o.contour + " in the frame of link " + o.links[0] + ", written by rollkin synthesize envelope from " +
                            scene.file + (env.closed ? " (closed)" : " (open)"),
                        pts);
   });
@@ -320,7 +267,11 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   if (drawable) {
     SplineOptions<double> so;
     so.closed = env.closed;
-    run.set_output("--out (DXF)", [&] { return io::dxf_text({io::spline_of(SampledProfile<double>(pts, so), "ENVELOPE")}, scene.length_unit); });
+    // Fitted now, before anything is written: a failure of the fit names the input (from_input).
+    std::string dxf_text = from_input(motion_input, [&] {
+      return io::dxf_text({io::spline_of(SampledProfile<double>(pts, so), "ENVELOPE")}, scene.length_unit);
+    });
+    run.set_output("--out (DXF)", [text = std::move(dxf_text)] { return text; });
   } else {
     run.omit_output("--out (DXF)");
   }
@@ -331,7 +282,7 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
             << " at every mid-pose (tolerance " << io::format_number(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
   for (const auto& d : env.defects)
     std::cerr << scene.file << ": at " << input_text(scene, sw, d.t) << ": " << d.what << "\n";
-  return env.defects.empty() && result.limits.empty() ? 0 : 1;
+  return std::max(sweep_status(found, run.inputs().size()), env.defects.empty() ? 0 : 1);
 }
 
 }  // namespace

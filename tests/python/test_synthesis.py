@@ -123,3 +123,17 @@ def test_nurbs_output_is_the_same_cam():
     assert np.max(np.abs(t["follower.s"] - s)) <= 1e-9 * 15
     env = rollkin.envelope(r["scene"], "cam", "follower", "follower.roller", tolerance=1e-7)
     assert env["nurbs"]["type"] == "nurbs" and env["nurbs"]["closed"] is True
+
+
+def test_envelope_start_and_tolerance_are_checked_by_the_command_lines_rule():
+    """One rule for the CLI's --start/--tolerance and Python's start=/tolerance= (synthesis/scene_envelope.hpp):
+    start=nan was accepted and returned no points while the CLI refused --start nan."""
+    r = rollkin.synthesize_cam(json.loads(CAM.read_text()))
+    for kwargs, word in [({"start": float("nan")}, "start"), ({"start": float("inf")}, "start"),
+                         ({"tolerance": float("nan")}, "tolerance"), ({"tolerance": -1.0}, "tolerance")]:
+        with pytest.raises(ValueError) as e:
+            rollkin.envelope(r["scene"], "cam", "follower", "follower.roller", **kwargs)
+        assert word in str(e.value) and "expected" in str(e.value)
+    cli = subprocess.run([CLI, "synthesize", "envelope", str(SRC / "examples" / "cycloid.json"), "--links", "ground", "disk",
+                          "--contour", "disk.rim", "--start", "nan", "--out", "never"], capture_output=True, text=True)
+    assert cli.returncode == 2 and "expected a contour parameter" in cli.stderr
