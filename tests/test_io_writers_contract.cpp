@@ -21,6 +21,7 @@
 
 #include "rollkin/io/dxf.hpp"
 #include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/format.hpp"
 #include "rollkin/io/json_document.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/point_file.hpp"
@@ -98,6 +99,9 @@ BOOST_AUTO_TEST_CASE(a_point_that_a_point_file_cannot_hold_is_an_internal_error)
 BOOST_AUTO_TEST_CASE(dxf_splines_read_back_with_their_control_points) {
   for (const Case& c : point_sets()) {
     if (c.points.size() < 4 || c.points.size() > 1000) continue;  // a spline needs four; 10^5 is the point files'
+    double size = 0;
+    for (const V& p : c.points) size = std::max(size, p.norm());
+    if (size < 1e-100 || size > 1e100) continue;  // the sampled spline squares its chords (the specs' range)
     for (const bool closed : {true, false}) {
       BOOST_TEST_CONTEXT(c.name << (closed ? ", closed" : ", open")) {
         SplineOptions<double> options;
@@ -113,8 +117,6 @@ BOOST_AUTO_TEST_CASE(dxf_splines_read_back_with_their_control_points) {
         for (std::size_t k = 0; k < back.segments.size(); ++k)
           for (std::size_t j = 0; j < 4; ++j)
             worst = std::max(worst, (back.segments[k].points[j] - written.control[3 * k + j]).norm());
-        double size = 0;
-        for (const V& p : c.points) size = std::max(size, p.norm());
         BOOST_TEST(worst <= 1e-15 * size);
       }
     }
@@ -122,7 +124,7 @@ BOOST_AUTO_TEST_CASE(dxf_splines_read_back_with_their_control_points) {
 }
 
 BOOST_AUTO_TEST_CASE(dxf_polylines_read_back_exactly) {
-  const std::vector<V> q{{1e-200, 0}, {1e300, 1e-300}, {-0.0, 2.5}};
+  const std::vector<V> q{{1e-90, 0}, {1e90, 1e-90}, {-0.0, 2.5e89}};  // digits a "%.16f" writer lost
   const io::DxfContour back = io::parse_dxf_contour(io::dxf_text({io::polyline_spline(q, "P")}, ""), {"P", ""}, "p.dxf");
   BOOST_TEST_REQUIRE(back.segments.size() == 2u);
   for (std::size_t k = 0; k < 2; ++k) {
@@ -174,12 +176,12 @@ std::string cam_spec(double scale, double lift, const std::string& follower, con
 
 BOOST_AUTO_TEST_CASE(synthesize_cam_files_read_back_at_every_scale) {
   const fs::path dir = testing::scratch_dir("writers_contract_cam");
-  for (const double scale : {1e-6, 1.0, 1e6}) {
+  for (const double scale : {1e-90, 1e-6, 1.0, 1e6, 1e90}) {
     auto n = [&](double v) { return io::format_number(v * scale, 17); };
     const std::vector<std::pair<std::string, std::string>> kinds{
         {R"({"motion": "translating", "offset": )" + n(12) + "}", R"({"roller_radius": )" + n(10) + "}"},
         {R"({"motion": "translating"})", R"({"flat": true})"},
-        {R"({"motion": "oscillating", "pivot": [)" + n(90) + ", 0], \"arm\": " + n(70) + R"(, "start_angle": 150})",
+        {R"({"motion": "oscillating", "pivot": [)" + n(90) + ", 0], \"arm\": " + n(70) + "}",
          R"({"roller_radius": )" + n(10) + "}"}};
     for (const auto& [follower, contact] : kinds) {
       const double lift = follower.find("oscillating") != std::string::npos ? 20 : 15 * scale;
