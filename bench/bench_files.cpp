@@ -3,8 +3,8 @@
 
 #include "rollkin/io/atomic_file.hpp"
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/svg_chart.hpp"
-#include "rollkin/io/svg_markup.hpp"
+#include "rollkin/output/svg_chart.hpp"
+#include "rollkin/io/svg/markup.hpp"
 
 #include <regex>
 #include <sstream>

@@ -22,7 +22,7 @@
 //                     [--only timing|outputs]
 #include "hand_paper.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <CLI/CLI.hpp>

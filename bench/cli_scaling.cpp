@@ -14,7 +14,7 @@
 //   rollkin_bench_cli_scaling [--rollkin build/rollkin] [--repeats 5] [--step 0.1] [--sizes 2,8,64]
 #include "measure.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <CLI/CLI.hpp>

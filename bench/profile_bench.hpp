@@ -8,7 +8,7 @@
 #include "scenes.hpp"
 
 #include "rollkin/scalar_mpfr.hpp"
-#include "rollkin/solve/interference.hpp"
+#include "rollkin/analysis/interference.hpp"
 
 #include <cmath>
 #include <cstdio>

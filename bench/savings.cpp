@@ -113,7 +113,7 @@ std::vector<Saving> measure_savings(Bench& bench, const std::vector<Row>& rows) 
           without.us_pose, with.us_pose});
   }
 
-  // 3. Interference checks (opt-in, solve/interference.hpp): the sweep alone vs sweep + check_interference.
+  // 3. Interference checks (opt-in, analysis/interference.hpp): the sweep alone vs sweep + check_interference.
   {
     SolveData<double> sd(paper.mech);
     VectorX<double> q0;

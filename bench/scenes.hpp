@@ -5,7 +5,7 @@
 
 #include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/builder.hpp"
-#include "rollkin/synthesis.hpp"
+#include "rollkin/synthesis/pitch_curves.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -124,7 +124,7 @@ inline std::vector<Vec2d> ellipse_samples(double a, double b, std::size_t n) {
   return q;
 }
 
-// ---- a non-circular gear pair synthesised from a transmission function (synthesis.hpp) -------------------
+// ---- a non-circular gear pair synthesised from a transmission function (synthesis/pitch_curves.hpp) -------------------
 // phi2 = -f(phi1), f(p) = p + k sin p (one turn of gear 2 per turn of gear 1), centre distance E:
 // pitch radii r1 = E f'/(1 + f'), r2 = E/(1 + f') (docs/method.md section 5). The contact lies on the line of
 // centres: gear 1's pitch point of body polar angle -p (radius r1(p)) touches gear 2's point of body polar
@@ -137,7 +137,7 @@ struct NonCircularGears {
   double r1(double p) const { return E * df(p) / (1 + df(p)); }
   double r2(double p) const { return E / (1 + df(p)); }
 
-  /// Pitch curves of n samples each from synthesis.hpp (equal body polar angles, counter-clockwise).
+  /// Pitch curves of n samples each from synthesis/pitch_curves.hpp (equal body polar angles, counter-clockwise).
   GearPair<double> pitch_curves(std::size_t n) const {
     return synthesise_gear_pair(TransmissionFunction<double>::sinusoidal(k), E, n, n);
   }

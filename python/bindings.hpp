@@ -4,7 +4,7 @@
 #pragma once
 #include "convert.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 
 #include <atomic>
 #include <chrono>

@@ -2,7 +2,7 @@
 #include "convert.hpp"
 
 #include "rollkin/io/input_error.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 
 #include <cmath>
 #include <utility>

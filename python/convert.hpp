@@ -2,7 +2,7 @@
 // (python/convert.cpp): a dict given to rollkin.scene() or an override becomes the JSON the scene reader
 // reads, with its messages in the same form (JSON path of a bad value).
 #pragma once
-#include "json_access.hpp"  // child(), index(), kind_of() of the scene reader's messages (src/io)
+#include "io/json/access.hpp"  // child(), index(), kind_of() of the scene reader's messages (src/io)
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

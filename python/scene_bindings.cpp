@@ -4,7 +4,7 @@
 #include "bindings.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,10 +11,10 @@
 // input files is refused) and written all or nothing.
 #include "bindings.hpp"
 
-#include "rollkin/centrodes.hpp"
+#include "rollkin/analysis/centrodes.hpp"
 #include "rollkin/io/input_error.hpp"
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/sweep_table.hpp"
 #include "rollkin/io/work_bound.hpp"
 #include "rollkin/output/centrode_files.hpp"
 #include "rollkin/output/sweep_files.hpp"
@@ -235,7 +235,7 @@ int link_named(const rollkin::io::Scene& scene, const std::string& name) {
   throw py::value_error("no link \"" + name + "\" in " + scene.file + "; its links are " + names);
 }
 
-/// The instant centres of link b relative to link a over the sweep, as arrays (centrodes.hpp), optionally
+/// The instant centres of link b relative to link a over the sweep, as arrays (analysis/centrodes.hpp), optionally
 /// also written as DXF splines (the CLI's `centrodes --dxf`).
 py::dict centrodes(const PyScene& s, const std::string& link_a, const std::string& link_b, const Request& r,
                    const py::object& dxf) {

@@ -3,9 +3,9 @@
 // design study can vary a motion law and read the pressure angles.
 #include "bindings.hpp"
 
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"

@@ -5,7 +5,7 @@
 
 #include "bezier_distance.hpp"
 
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 
 #include <boost/test/unit_test.hpp>
 

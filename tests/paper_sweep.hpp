@@ -2,7 +2,7 @@
 // assembly input, a limit and rows not reached, for the tests of the sweep's outputs.
 #pragma once
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/position.hpp"
 

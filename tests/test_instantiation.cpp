@@ -10,10 +10,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include "rollkin/samples/mechanisms.hpp"
-#include "rollkin/analysis.hpp"
+#include "rollkin/analysis/motion.hpp"
 #include "rollkin/builder.hpp"
-#include "rollkin/centrodes.hpp"
-#include "rollkin/design_check.hpp"
+#include "rollkin/analysis/centrodes.hpp"
+#include "rollkin/analysis/design_check.hpp"
 #include "rollkin/profile/arc_length_parameterised.hpp"
 #include "rollkin/profile/banded_solver.hpp"
 #include "rollkin/profile/bezier.hpp"
@@ -29,7 +29,7 @@
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"
-#include "rollkin/synthesis.hpp"
+#include "rollkin/synthesis/pitch_curves.hpp"
 
 namespace rollkin {
 

@@ -10,7 +10,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/position.hpp"
 

@@ -1,4 +1,4 @@
-// DXF contours (io/dxf.hpp) against an independent producer: tests/data/dxf/make_fixtures.py writes the
+// DXF contours (io/dxf/reader.hpp) against an independent producer: tests/data/dxf/make_fixtures.py writes the
 // drawings with ezdxf and, next to each, the points ezdxf itself evaluates on the drawn entities and the facts
 // of the fixture (entities, closed, corners, $INSUNITS, what an error must name). Every ezdxf point must lie
 // on the imported contour (nearest-point distance by Newton projection) within 1e-12 of the drawing size; closed
@@ -11,7 +11,7 @@
 #include "bezier_distance.hpp"
 #include "test_support.hpp"
 
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// DXF drawings as CAD programs write them (io/dxf.hpp), against ezdxf: tests/data/dxf/ezdxf_cad.py writes
+// DXF drawings as CAD programs write them (io/dxf/reader.hpp), against ezdxf: tests/data/dxf/ezdxf_cad.py writes
 // drawings with several chains on one layer (entities out of order and reversed, extrusion -Z, an ELLIPSE with
 // axis ratio > 1, a SPLINE with repeated control points, a zero-length LINE, a periodic SPLINE with n + 1
 // knots, a TEXT, a VIEWPORT and a MULTILEADER, text after EOF) and INSERTs (rotation, negative and
@@ -15,7 +15,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-// The DXF reader (io/dxf.hpp) against ezdxf on random valid drawings: tests/data/dxf/ezdxf_random.py writes
+// The DXF reader (io/dxf/reader.hpp) against ezdxf on random valid drawings: tests/data/dxf/ezdxf_random.py writes
 // seeded drawings with python3-ezdxf (lines and arcs either way, partial ellipses, LWPOLYLINEs and 2D
 // POLYLINEs with bulges 0 and +-1e-18 .. 1e3, rational splines with random weights and knots, extrusion +Z
 // and -Z, 1 to 4 chains on their own layers, some a closed CIRCLE, ELLIPSE or LWPOLYLINE alone, scales 1e-2
@@ -21,7 +21,7 @@
 #include "ezdxf_reference.hpp"
 #include "test_support.hpp"
 
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// The DXF writer (io/dxf_writer.hpp) against the DXF reader (io/dxf.hpp, libdxflib's parser and the Boehm
+// The DXF writer (io/dxf/writer.hpp) against the DXF reader (io/dxf/reader.hpp, libdxflib's parser and the Boehm
 // knot insertion of profile/nurbs.hpp, written independently of the writer): a sampled contour written as a
 // SPLINE and read back is the same curve. Every span's Bezier segment read back equals the spline's cubic at
 // its two ends and two inner points (1e-14 of the contour's size); a closed contour comes back closed, ends
@@ -7,8 +7,8 @@
 #define BOOST_TEST_MODULE io_dxf_writer
 #include <boost/test/unit_test.hpp>
 
-#include "rollkin/io/dxf.hpp"
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/reader.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 
 #include <cmath>
 #include <vector>

@@ -7,11 +7,11 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/point_file.hpp"
-#include "rollkin/io/scene.hpp"
-#include "rollkin/io/svg_reader.hpp"
+#include "rollkin/io/scene/reader.hpp"
+#include "rollkin/io/svg/reader.hpp"
 #include "rollkin/reference.hpp"
 
 #include <fcntl.h>

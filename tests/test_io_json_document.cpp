@@ -3,7 +3,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 
 #include <string>
 

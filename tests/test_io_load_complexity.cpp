@@ -18,7 +18,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 
 #include <malloc.h>
 #include <time.h>

@@ -4,7 +4,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/units.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/svg_path_data.hpp"
+#include "rollkin/io/svg/path_data.hpp"
 
 #include <algorithm>
 #include <cmath>

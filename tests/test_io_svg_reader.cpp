@@ -6,7 +6,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/svg_reader.hpp"
+#include "rollkin/io/svg/reader.hpp"
 
 #include <cctype>
 #include <cmath>

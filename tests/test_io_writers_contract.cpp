@@ -19,14 +19,14 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/dxf.hpp"
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/reader.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 #include "rollkin/io/format.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/output_set.hpp"
 #include "rollkin/io/point_file.hpp"
-#include "rollkin/io/scene.hpp"
-#include "rollkin/io/svg_reader.hpp"
+#include "rollkin/io/scene/reader.hpp"
+#include "rollkin/io/svg/reader.hpp"
 #include "rollkin/synthesis/synthesis_files.hpp"
 
 #include <cmath>

@@ -7,7 +7,7 @@
 
 #include "test_support.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/samples/mechanisms.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 //  - twin elliptical gears (a = 2, e = 1/2, pivots at foci 2a apart) against the closed form
 //    tan(phi2/2) = ((1 - e)/(1 + e)) tan(phi1/2) (docs/method.md section 5; gear 2 turns the other way);
 //  - the non-circular pair synthesised from phi2 = f(phi1) = phi1 + k sin(phi1) (k = 0.3, E = 2) by
-//    rollkin/synthesis.hpp: the samples agree with the files written by the independent Python generator,
+//    rollkin/synthesis/pitch_curves.hpp: the samples agree with the files written by the independent Python generator,
 //    and the analysis gives back f (gear 2's revolute angle is -f(phi1)).
 // Sweeps run over more than a full turn of gear 1, so the contacts cross the seams of both closed splines.
 //
@@ -20,7 +20,7 @@
 #include "discretised.hpp"
 #include "rollkin/geometry/validation.hpp"
 #include "rollkin/solve/continuation.hpp"
-#include "rollkin/synthesis.hpp"
+#include "rollkin/synthesis/pitch_curves.hpp"
 
 #include <iomanip>
 #include <sstream>

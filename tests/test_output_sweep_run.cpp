@@ -8,9 +8,9 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/scene.hpp"
-#include "rollkin/io/sweep_file.hpp"
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/io/scene/reader.hpp"
+#include "rollkin/output/sweep_file.hpp"
+#include "rollkin/output/sweep_table.hpp"
 #include "rollkin/output/sweep_run.hpp"
 #include "rollkin/solve/continuation.hpp"
 #include "rollkin/solve/position.hpp"

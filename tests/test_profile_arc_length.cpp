@@ -10,7 +10,7 @@
 #include "discretised.hpp"
 #include "test_support.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/profile/arc_length_parameterised.hpp"
 #include "rollkin/solve/continuation.hpp"
 

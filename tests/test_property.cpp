@@ -16,7 +16,7 @@
 
 #include "rollkin/samples/mechanisms.hpp"
 #include "rollkin/builder.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/scalar_mpfr.hpp"
 #include "rollkin/solve/mpfr50_instances.hpp"
 #include "test_support.hpp"

@@ -3,7 +3,7 @@
 // new in this test executable alone: the allocations of sweeps of 10 and of 1000 requested poses (and of a sweep of
 // the same range that reaches the dead point at the end of the paper example's motion) must not grow with the poses;
 // nor those of a summary whose poses are interpolated between strides (dense output), nor those of writing a sweep's
-// CSV (io/sweep_table.hpp).
+// CSV (output/sweep_table.hpp).
 #define BOOST_TEST_MODULE solve_allocation
 #include <boost/test/unit_test.hpp>
 
@@ -12,7 +12,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/sweep_table.hpp"
 
 #include <atomic>
 #include <cstdlib>

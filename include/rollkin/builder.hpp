@@ -1,5 +1,5 @@
 // Describing a mechanism in code: links, contours and pairs by name, then build() numbers the variables
-// and finds the loops. The scene reader (src/io/scene_reader.cpp) builds through it from JSON.
+// and finds the loops. The scene reader (src/io/scene/reader.cpp) builds through it from JSON.
 #pragma once
 
 #include "rollkin/mechanism.hpp"

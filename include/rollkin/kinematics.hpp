@@ -291,7 +291,7 @@ template <class S> void compute_bias(const Mechanism<S>& m, const VectorX<S>& qd
 
 /// The acceleration residual G(q, qdot, qddot) = Vdot (detail::loop_accelerations), pairs evaluated at q with
 /// order 3 and qdot. Zero along every motion of the mechanism, wherever it is: the jerk equation is its
-/// derivative along the motion (analysis.hpp).
+/// derivative along the motion (analysis/motion.hpp).
 template <class S> void acceleration_residual(const Mechanism<S>& m, const VectorX<S>& qdot, const VectorX<S>& qddot,
                                               KinematicsData<S>& d, VectorX<S>& out) {
   out.resize(m.equation_count());

@@ -1,7 +1,7 @@
 // `rollkin centrodes`: the instant centre of two links' relative motion over the sweep, as point files (and
 // DXF splines).
 #include "commands.hpp"
-#include "rollkin/centrodes.hpp"
+#include "rollkin/analysis/centrodes.hpp"
 
 #include <algorithm>
 #include <iostream>

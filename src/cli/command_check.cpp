@@ -89,7 +89,7 @@ std::string roller_line(const Mechanism<double>& m, const PairDesignCheck<double
 
 }  // namespace
 
-/// The design check of a solved sweep (rollkin/design_check.hpp) as text.
+/// The design check of a solved sweep (rollkin/analysis/design_check.hpp) as text.
 DesignReport design_report(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
   const DesignCheck<double> check = check_design(m, result);

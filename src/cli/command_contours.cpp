@@ -4,7 +4,7 @@
 #include "commands.hpp"
 
 #include "rollkin/io/contour_listing.hpp"
-#include "rollkin/io/svg_drawing.hpp"
+#include "rollkin/output/svg_drawing.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,9 +2,9 @@
 // animation), the summary, the assembly report (--verbose) and the interference check (--interference).
 #include "commands.hpp"
 
-#include "rollkin/io/sweep_file.hpp"
+#include "rollkin/output/sweep_file.hpp"
 #include "rollkin/solve/batch.hpp"
-#include "rollkin/solve/interference.hpp"
+#include "rollkin/analysis/interference.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ std::vector<std::string> osculating_contacts(const Mechanism<double>& m, const V
 }
 
 /// --interference: contours sampled once in their links' frames and checked at every solved pose
-/// (solve/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
+/// (analysis/interference.hpp); one line per run of consecutive poses with the same finding, inputs in the
 /// file's units, with the chords' distance from the curves and the touch tolerance.
 std::vector<std::string> interference_lines(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result) {
   const Mechanism<double>& m = scene.mechanism;
@@ -180,7 +180,7 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   SweepSummary<double> found;
   if (values_needed) {
     // The files alone read the poses in row order: kept in a temporary file, memory stays that of a summary
-    // (io/sweep_file.hpp). The interference and design checks take the whole result in memory.
+    // (output/sweep_file.hpp). The interference and design checks take the whole result in memory.
     std::optional<io::SweepRows> rows;
     if (o.interference || o.verbose) {
       result = run.solve(sd, q, assembly);

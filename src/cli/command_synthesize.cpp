@@ -4,7 +4,7 @@
 #include "commands.hpp"
 
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"

@@ -4,15 +4,15 @@
 // an error. Each command is one file src/cli/command_<name>.cpp declaring its options and running it; main.cpp
 // lists the commands.
 #pragma once
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/sweep_table.hpp"
 #include "rollkin/output/centrode_files.hpp"
 #include "rollkin/output/sweep_files.hpp"
 #include "rollkin/output/sweep_run.hpp"
 
-#include "rollkin/design_check.hpp"
+#include "rollkin/analysis/design_check.hpp"
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <CLI/CLI.hpp>
@@ -184,7 +184,7 @@ struct DesignReport {
   std::vector<std::string> section, findings;
 };
 
-/// The design check of a solved sweep (rollkin/design_check.hpp) as text.
+/// The design check of a solved sweep (rollkin/analysis/design_check.hpp) as text.
 DesignReport design_report(const io::Scene& scene, const Sweep& sw, const SweepResult<double>& result);
 
 

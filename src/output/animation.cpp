@@ -2,11 +2,11 @@
 
 #include "animation_assets.hpp"  // generated: animation.css and animation.js as string literals
 
-#include "rollkin/centrodes.hpp"
+#include "rollkin/analysis/centrodes.hpp"
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/decimate.hpp"
+#include "rollkin/output/decimate.hpp"
 #include "rollkin/io/format.hpp"
-#include "rollkin/io/svg_markup.hpp"
+#include "rollkin/io/svg/markup.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>
@@ -122,7 +122,7 @@ Eigen::Vector4d extent(const std::vector<LinkSketch>& sketches, const Frames& f,
   return box;
 }
 
-/// The centrodes of every moving link relative to the ground (centrodes.hpp): per link its moving centrode
+/// The centrodes of every moving link relative to the ground (analysis/centrodes.hpp): per link its moving centrode
 /// (in its own frame) and its fixed centrode (in the ground's frame). Only the part whose world point lies
 /// within `view` (xmin, ymin, xmax, ymax) is kept: where two links turn at nearly the same rate the centre runs
 /// off far away, and a path thousands of pictures long would only cost drawing time.

@@ -2,7 +2,7 @@
 #include "rollkin/output/centrode_files.hpp"
 
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 
 #include <cstring>
 

@@ -2,10 +2,10 @@
 // contact analysis charts, stacked in one SVG document.
 #include "rollkin/output/charts.hpp"
 
-#include "rollkin/analysis.hpp"
-#include "rollkin/io/decimate.hpp"
-#include "rollkin/io/svg_chart.hpp"
-#include "rollkin/io/svg_markup.hpp"
+#include "rollkin/analysis/motion.hpp"
+#include "rollkin/output/decimate.hpp"
+#include "rollkin/output/svg_chart.hpp"
+#include "rollkin/io/svg/markup.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <algorithm>
@@ -72,7 +72,7 @@ struct InputAxis {
     }
   }
   double at(std::size_t r) const { return result.input(r) * scale; }
-  /// A series of a chart `width` pixels wide, reduced to its columns as it is read (io/decimate.hpp): the
+  /// A series of a chart `width` pixels wide, reduced to its columns as it is read (output/decimate.hpp): the
   /// charts hold a few points per pixel column whatever the number of poses (SvgChart reduces again to its
   /// exact plot area).
   io::SeriesReducer series(int width) const { return io::SeriesReducer(lo, hi, width); }

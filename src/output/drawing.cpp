@@ -3,8 +3,8 @@
 #include "rollkin/output/drawing.hpp"
 
 #include "rollkin/io/csv.hpp"
-#include "rollkin/io/svg_drawing.hpp"
-#include "rollkin/io/svg_markup.hpp"
+#include "rollkin/output/svg_drawing.hpp"
+#include "rollkin/io/svg/markup.hpp"
 
 #include <algorithm>
 #include <cmath>

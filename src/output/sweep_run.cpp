@@ -1,7 +1,7 @@
 // The run of one sweep, shared by the command line and the Python module (rollkin/output/sweep_run.hpp).
 #include "rollkin/output/sweep_run.hpp"
 
-#include "rollkin/io/sweep_file.hpp"
+#include "rollkin/output/sweep_file.hpp"
 #include "rollkin/solve/continuation.hpp"
 
 #include <utility>

@@ -2,12 +2,12 @@
 // (include/rollkin/synthesis/cam.hpp; docs/synthesis.md, "Disk cams").
 #include "rollkin/synthesis/cam.hpp"
 
-#include "rollkin/analysis.hpp"
+#include "rollkin/analysis/motion.hpp"
 #include "rollkin/io/format.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/solve/continuation.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <limits>

@@ -4,12 +4,12 @@
 #include "rollkin/io/format.hpp"
 #include "rollkin/synthesis/spec_sizes.hpp"
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/synthesis/cam.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <filesystem>

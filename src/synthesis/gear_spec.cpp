@@ -3,11 +3,11 @@
 #include "rollkin/io/format.hpp"
 #include "rollkin/synthesis/spec_sizes.hpp"
 #include "rollkin/io/input_file.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/synthesis/gears.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -3,11 +3,11 @@
 #include "rollkin/io/format.hpp"
 #include "rollkin/synthesis/gears.hpp"
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/profile/spline.hpp"
 #include "rollkin/solve/continuation.hpp"
 
-#include "../io/json_access.hpp"
+#include "../io/json/access.hpp"
 
 #include <cmath>
 #include <limits>

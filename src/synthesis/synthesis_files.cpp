@@ -1,7 +1,7 @@
 // The files of `rollkin synthesize cam` and `rollkin synthesize gears` (include/rollkin/synthesis/synthesis_files.hpp).
 #include "rollkin/synthesis/synthesis_files.hpp"
 
-#include "rollkin/io/dxf_writer.hpp"
+#include "rollkin/io/dxf/writer.hpp"
 #include "rollkin/io/point_file.hpp"
 
 #include <algorithm>

@@ -472,7 +472,7 @@ check "control characters in names: escaped in the CSV (3 rows + header, one lin
   $([ "$(wc -l < ctrl.csv)" -eq 4 ] && head -n 1 ctrl.csv | grep -q 'O\\x07_A.theta2,' && head -n 1 ctrl.csv | grep -q 'li\\x01nk<&>\\n2.x'; echo $?)
 
 # ---- out of memory: exit 3 and what it was doing (not "bad input") ----------------------------------------
-# 9.4 million poses in 150 MB of address space: the poses go to a temporary file (io/sweep_file.hpp), but the
+# 9.4 million poses in 150 MB of address space: the poses go to a temporary file (output/sweep_file.hpp), but the
 # requested inputs alone take 75 MB twice.
 if (ulimit -v 150000; "$BIN" --version >/dev/null 2>&1); then  # not under AddressSanitizer (needs more)
   (ulimit -v 150000; "$BIN" solve "$EX/paper_fourbar.json" --step 0.000016 --csv oom.csv >out.txt 2>err.txt); rc=$?

@@ -1,9 +1,9 @@
 // libFuzzer harness: bytes -> the DXF contour reader the scene's {"type": "dxf"} contours use
-// (parse_dxf_contour, include/rollkin/io/dxf.hpp), selecting layer "0", by handle "2F", by handles "2F" and
+// (parse_dxf_contour, include/rollkin/io/dxf/reader.hpp), selecting layer "0", by handle "2F", by handles "2F" and
 // "30", and near (0, 0): every selection path, the order-free chaining and the placement of INSERTs (nesting
 // depth and cycles bounded) behind them are exercised.
 #include "fuzz_support.hpp"
-#include "rollkin/io/dxf.hpp"
+#include "rollkin/io/dxf/reader.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // file and calls it). The scene is anchored in the source tree, so contour files named relative to it
 // ("shapes/circle_n0032.txt") are read as the CLI would read them.
 #include "fuzz_support.hpp"
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,12 +1,12 @@
 // libFuzzer harness: bytes -> the SVG path reader, through the public entry points of
-// include/rollkin/io/svg_reader.hpp only (so it stays valid when the reader behind them changes).
+// include/rollkin/io/svg/reader.hpp only (so it stays valid when the reader behind them changes).
 //  - input starting with '<' or a byte-order mark byte (0xEF, 0xFE, 0xFF): a whole SVG document, written to a scratch file and read with
 //    read_svg_path(file, "contour") as a scene's {"type": "svg", "path": "contour"} contour is, and every subpath
 //    the document draws with read_svg_shapes(file, "") as `rollkin contours` and "near" read it (<use> clones,
 //    <symbol>, <switch> expanded: cycles, depth and counts bounded);
 //  - anything else: path data (the `d` attribute) for parse_svg_path_data.
 #include "fuzz_support.hpp"
-#include "rollkin/io/svg_reader.hpp"
+#include "rollkin/io/svg/reader.hpp"
 
 #include <unistd.h>
 

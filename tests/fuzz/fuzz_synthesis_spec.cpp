@@ -4,7 +4,7 @@
 // the synthesis itself: the law's continuity check and its values at 64 angles, the transmission function and
 // its derivative at 64 angles.
 #include "fuzz_support.hpp"
-#include "rollkin/io/json_document.hpp"
+#include "rollkin/io/json/document.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
 

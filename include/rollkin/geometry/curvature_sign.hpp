@@ -1,5 +1,5 @@
 // The sign of the relative curvature of two contours at a contact, decided exactly: the sign test behind
-// the design check (design_check.hpp, docs/analysis.md "Design check").
+// the design check (analysis/design_check.hpp, docs/analysis.md "Design check").
 //
 // Each contour enters by the first two derivatives of its parameterisation at the contact, d1 = p', d2 = p''
 // (material on the left), whose signed curvature is kappa = (d1 x d2) / |d1|^3 (profile/jet.hpp). The sign of

@@ -8,7 +8,7 @@
 //   raising max_steps raises both. There is no other cap on the number of values.
 #pragma once
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 
 #include <stdexcept>
 #include <string>

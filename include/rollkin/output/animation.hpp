@@ -9,7 +9,7 @@
 // to the ground (fixed one in the ground's frame, moving one in the link's; the part within the picture and as
 // much around it, none for a centre that stays within a pixel) are drawn once.
 // Frames: every pose of a sweep of up to io::kAnimationFrames (2000) poses; of a longer one, 2000 evenly spaced
-// and, where the status changes, the poses on both sides of the change (io::pick_frames, io/decimate.hpp), so
+// and, where the status changes, the poses on both sides of the change (io::pick_frames, output/decimate.hpp), so
 // that the page stays under a few megabytes for any number of poses and no limit, singular pose or unsolved
 // stretch is lost from it. The paths and centrodes are drawn through the frames.
 // Controls: a play/pause button, a slider over the frames (in CSV row order), the input value (the CSV's input

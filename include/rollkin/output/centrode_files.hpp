@@ -1,8 +1,8 @@
 // The centrode files (`rollkin centrodes`, Python Scene.centrodes): point files and DXF splines of the
-// instant centre of one link relative to another over a solved sweep (rollkin/centrodes.hpp).
+// instant centre of one link relative to another over a solved sweep (rollkin/analysis/centrodes.hpp).
 #pragma once
 
-#include "rollkin/centrodes.hpp"
+#include "rollkin/analysis/centrodes.hpp"
 #include "rollkin/output/drawing.hpp"
 
 #include <string>
@@ -17,7 +17,7 @@ std::string centrode_text(const SweepOutput& ctx, const std::vector<InstantCentr
                           bool in_a);
 
 /// Both centrodes (in link a's frame on layer <a>, in link b's on layer <b>) as DXF SPLINE entities: each run
-/// of consecutive finite centres is the cubic spline through its points (io/dxf_writer.hpp; closed when the
+/// of consecutive finite centres is the cubic spline through its points (io/dxf/writer.hpp; closed when the
 /// run is the whole sweep and ends where it starts), a run of two or three points the polyline through them.
 /// Consecutive centres that coincide (a dwell) are one point of the spline.
 std::string centrode_dxf(const SweepOutput& ctx, const std::vector<InstantCentre<double>>& centres, int a, int b);

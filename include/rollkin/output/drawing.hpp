@@ -3,7 +3,7 @@
 // own frame, the contact points, the file's name for titles and SVG documents nested in others.
 #pragma once
 
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/sweep_table.hpp"
 #include "rollkin/kinematics.hpp"
 
 #include <Eigen/Core>

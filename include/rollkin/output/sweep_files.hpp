@@ -13,7 +13,7 @@
 #pragma once
 
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/output/sweep_table.hpp"
 
 #include <string>
 #include <utility>

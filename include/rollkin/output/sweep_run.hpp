@@ -19,8 +19,8 @@
 #pragma once
 
 #include "rollkin/io/output_set.hpp"
-#include "rollkin/io/scene.hpp"
-#include "rollkin/io/sweep_table.hpp"
+#include "rollkin/io/scene/reader.hpp"
+#include "rollkin/output/sweep_table.hpp"
 #include "rollkin/io/work_bound.hpp"
 #include "rollkin/output/sweep_files.hpp"
 #include "rollkin/solve/sweep_summary.hpp"
@@ -113,7 +113,7 @@ class SweepRun {
   SweepResult<double> solve(SolveData<double>& sd, const VectorX<double>& q, const SolveReport<double>& assembly,
                             const std::atomic<bool>* cancel = nullptr, bool link_poses = false) const;
   /// The same, the poses kept in `file` (made with this run's inputs) rather than in memory: the files'
-  /// memory stays that of a summary whatever the number of poses (io/sweep_file.hpp).
+  /// memory stays that of a summary whatever the number of poses (output/sweep_file.hpp).
   void solve_into(SolveData<double>& sd, const VectorX<double>& q, const SolveReport<double>& assembly,
                   io::SweepFile& file) const;
   /// The sweep's summary alone, no values (sweep_summary.hpp): what a report without files needs.

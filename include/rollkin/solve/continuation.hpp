@@ -72,7 +72,7 @@ template <class S> struct ContinuationSettings {
 };
 
 /// Where sweep_into() reports the continuation, for a caller that keeps the poses its own way (e.g. in a
-/// file, io/sweep_file.hpp). Each side of the assembly input is reported nearest first: ascending above it,
+/// file, output/sweep_file.hpp). Each side of the assembly input is reported nearest first: ascending above it,
 /// then descending below it. A sink that does not keep values (keeps_values() false) may be given poses
 /// interpolated between the continuation's sub-steps (dense output, file comment).
 template <class S> struct SweepSink {

@@ -1,6 +1,6 @@
 // The grid of input values of a sweep of one driver: from, from + step, ... up to `to`, given in the
 // scene's units (degrees or radians for an angle input, scene length units for a length input) with the
-// factor that converts them to solver units. Read from a scene's "sweep" (io/scene.hpp) or the CLI's
+// factor that converts them to solver units. Read from a scene's "sweep" (io/scene/reader.hpp) or the CLI's
 // --from/--to/--step, and fed to sweep() (solve/continuation.hpp).
 //
 // The grid is the DECIMAL one the user wrote: with from -50 and step 0.001, value k is the double nearest

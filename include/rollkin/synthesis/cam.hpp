@@ -15,7 +15,7 @@
 // roller's centre (or at the face's point above the guide).
 #pragma once
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/io/units.hpp"
 #include "rollkin/synthesis/envelope.hpp"
 #include "rollkin/synthesis/motion_law.hpp"

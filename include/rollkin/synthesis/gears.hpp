@@ -1,5 +1,5 @@
 // Non-circular gear pairs from a transmission function phi2 = f(phi1) and a centre distance E: the pitch curves
-// of include/rollkin/synthesis.hpp sampled to a tolerance, their convexity, the scene that rolls them and the
+// of include/rollkin/synthesis/pitch_curves.hpp sampled to a tolerance, their convexity, the scene that rolls them and the
 // round trip (docs/synthesis.md, "Non-circular gears").
 //
 // Transmission functions:
@@ -12,9 +12,9 @@
 //   table's last phi2 must be its first + 2 pi (a last row at phi1 + 2 pi), else it is reported.
 #pragma once
 
-#include "rollkin/io/scene.hpp"
+#include "rollkin/io/scene/reader.hpp"
 #include "rollkin/io/units.hpp"
-#include "rollkin/synthesis.hpp"
+#include "rollkin/synthesis/pitch_curves.hpp"
 #include "rollkin/synthesis/motion_law.hpp"
 
 #include <nlohmann/json.hpp>
