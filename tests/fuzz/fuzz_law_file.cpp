@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const nlohmann::ordered_json gear = nlohmann::ordered_json::parse(
         R"({"units": {"length": "mm", "angle": "deg"}, "centre_distance": 80, "transmission": {"file": "law.txt"}})");
     const synthesis::GearSpec spec = synthesis::gear_spec_from_document(gear, "fuzz.json", dir);
-    const synthesis::TransmissionFunction<double> f = synthesis::transmission(spec);
+    const auto f = synthesis::transmission(spec);
     for (int k = 0; k < 64; ++k) (void)(f.f(2 * pi<double>() * k / 64) + f.df(2 * pi<double>() * k / 64));
   });
   return 0;

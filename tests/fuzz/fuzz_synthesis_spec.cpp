@@ -23,7 +23,7 @@ void cam(const nlohmann::ordered_json& document) {
 
 void gears(const nlohmann::ordered_json& document) {
   const rollkin::synthesis::GearSpec spec = rollkin::synthesis::gear_spec_from_document(document, "fuzz.json", kDir);
-  const rollkin::synthesis::TransmissionFunction<double> f = rollkin::synthesis::transmission(spec);
+  const auto f = rollkin::synthesis::transmission(spec);
   for (int k = 0; k < 64; ++k) (void)(f.f(2 * rollkin::pi<double>() * k / 64) + f.df(2 * rollkin::pi<double>() * k / 64));
 }
 
