@@ -60,7 +60,8 @@ Command synthesize_command(CLI::App& rollkin) {
       "pressure angle and the smallest radius of curvature of the profile at the contacts.\n"
       "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
       "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
-      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory.");
+      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory; 4 internal error (a\n"
+      "file it wrote that its own reader refuses; nothing written).");
   auto g = std::make_shared<SynthesizeCamOptions>();
   CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
   gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
@@ -74,7 +75,7 @@ Command synthesize_command(CLI::App& rollkin) {
       "their DXF and the scene rolling them (revolutes gear1, gear2, rolling pair mesh), all or nothing, then\n"
       "solves that scene over one turn and prints the worst deviation of gear2.phi from -f(gear1.phi).\n"
       "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
-      "written); 2 bad input; 3 out of memory.");
+      "written); 2 bad input; 3 out of memory; 4 internal error (nothing written).");
   auto e = std::make_shared<SynthesizeEnvelopeOptions>();
   CLI::App* env = app->add_subcommand("envelope", "the conjugate on link A of a contour of link B under the scene's sweep");
   add_sweep_options(*env, e->sweep);
