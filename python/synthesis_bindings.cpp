@@ -174,7 +174,10 @@ py::dict envelope(const PyScene& s, const std::string& link_a, const std::string
     throw py::value_error("envelope: no contour \"" + contour_name + "\" on link \"" + link_b + "\"");
   if (!scene.sweep) throw py::value_error("envelope: the scene has no sweep");
   const double tol = tolerance ? *tolerance : 1e-9 * m.length_scale;
-  if (!(tol > 0)) throw py::value_error("envelope: tolerance must be > 0");
+  // The CLI's checks of --start and --tolerance (synthesis/scene_envelope.hpp), before any work.
+  if (const std::string bad = synthesis::envelope_tolerance_problem(tol); !bad.empty()) throw py::value_error("envelope: tolerance: " + bad);
+  if (start)
+    if (const std::string bad = synthesis::envelope_start_problem(*start); !bad.empty()) throw py::value_error("envelope: start: " + bad);
   auto shared = s.scene;
   const synthesis::Envelope<double> env = interruptible<synthesis::Envelope<double>>([shared, a, b, contour, start, tol](const std::atomic<bool>&) {
     const Mechanism<double>& mm = shared->mechanism;

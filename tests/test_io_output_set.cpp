@@ -4,10 +4,13 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/atomic_file.hpp"
+#include "rollkin/io/input_file.hpp"
 #include "rollkin/io/output_set.hpp"
 
 #include <filesystem>
+#include <new>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include <sys/stat.h>
@@ -249,4 +252,66 @@ BOOST_AUTO_TEST_CASE(streamed_outputs_are_written_in_blocks_all_or_nothing) {
   BOOST_TEST(read_text(dir / "a.csv") == expected);
   BOOST_TEST(read_text(dir / "b.csv") == "new b");
   BOOST_TEST(names_in(dir) == (std::set<std::string>{"a.csv", "b.csv"}));
+}
+
+// ---- the check inside the commit (docs/reliability.md, "Outputs, signals and messages (issue 37)") ---------
+
+BOOST_AUTO_TEST_CASE(the_check_reads_the_outputs_before_they_are_committed) {
+  const fs::path dir = fresh_dir("check_reads_staged");
+  write_text(dir / "scene.json", "old scene\n");
+  OutputSet out;
+  const std::size_t scene = out.add("--out (scene)", (dir / "scene.json").string());
+  const std::size_t points = out.add("--out (points)", (dir / "points.txt").string());
+  out.set(scene, "new scene\n");
+  out.set(points, "1 2\n");
+  std::string seen_scene, seen_points;
+  out.commit([&] {
+    // What the readers see under the outputs' own names is the staged content; the targets are untouched.
+    seen_scene = rollkin::io::read_input_file((dir / "scene.json").string(), "the scene file");
+    seen_points = rollkin::io::read_input_file((dir / "points.txt").string(), "the point file");
+    BOOST_TEST(read_text(dir / "scene.json") == "old scene\n");
+    BOOST_TEST(!fs::exists(dir / "points.txt"));
+  });
+  BOOST_TEST(seen_scene == "new scene\n");
+  BOOST_TEST(seen_points == "1 2\n");
+  BOOST_TEST(read_text(dir / "scene.json") == "new scene\n");
+  BOOST_TEST(read_text(dir / "points.txt") == "1 2\n");
+  BOOST_TEST((names_in(dir) == std::set<std::string>{"points.txt", "scene.json"}));
+  // Outside the check the outputs' names are the files' again.
+  BOOST_TEST(rollkin::io::opened_path((dir / "points.txt").string()) == (dir / "points.txt").string());
+}
+
+BOOST_AUTO_TEST_CASE(a_check_that_refuses_an_output_commits_nothing_and_is_an_internal_error) {
+  const fs::path dir = fresh_dir("check_refuses");
+  write_text(dir / "a.txt", "old a\n");
+  OutputSet out;
+  const std::size_t a = out.add("--out (a)", (dir / "a.txt").string());
+  const std::size_t b = out.add("--out (b)", (dir / "b.txt").string());
+  out.set(a, "new a\n");
+  out.set(b, "new b\n");
+  std::string message;
+  try {
+    out.commit([&] {
+      throw rollkin::io::InputError((dir / "b.txt").string(), "line 1", "expected two numbers");
+    });
+  } catch (const rollkin::io::InternalError& e) {
+    message = e.what();
+  }
+  BOOST_TEST(contains(message, "refused by rollkin's own reader"));
+  BOOST_TEST(contains(message, "b.txt:line 1: expected two numbers"));
+  BOOST_TEST(contains(message, "nothing was written"));
+  BOOST_TEST(read_text(dir / "a.txt") == "old a\n");
+  BOOST_TEST((names_in(dir) == std::set<std::string>{"a.txt"}));  // no b.txt, no temporary
+}
+
+BOOST_AUTO_TEST_CASE(a_check_that_fails_otherwise_commits_nothing) {
+  const fs::path dir = fresh_dir("check_fails");
+  OutputSet out;
+  out.set(out.add("--out", (dir / "c.txt").string()), "c\n");
+  BOOST_CHECK_THROW(out.commit([] { throw std::bad_alloc(); }), std::bad_alloc);  // out of memory stays itself
+  BOOST_TEST(names_in(dir).empty());
+  OutputSet again;
+  again.set(again.add("--out", (dir / "c.txt").string()), "c\n");
+  BOOST_CHECK_THROW(again.commit([] { throw std::runtime_error("sweep: no pose"); }), rollkin::io::InternalError);
+  BOOST_TEST(names_in(dir).empty());
 }

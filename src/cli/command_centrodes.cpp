@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "rollkin/analysis/centrodes.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -27,7 +28,7 @@ Command centrodes_command(CLI::App& rollkin) {
   CLI::App* app = rollkin.add_subcommand("centrodes", "loci of the instant centre of two links' relative motion, as point files");
   add_sweep_options(*app, o->sweep);
   app->add_option("--links", o->links, "the two links A and B (names in the scene)")->expected(2)->required()->type_name("A B");
-  add_output(*app, "--out", o->out, "prefix of the files PREFIX.A.txt (centrode in A's frame) and PREFIX.B.txt")
+  add_prefix(*app, "--out", o->out, "prefix of the files PREFIX.A.txt (centrode in A's frame) and PREFIX.B.txt")
       ->required()
       ->type_name("PREFIX");
   add_output(*app, "--dxf", o->dxf, "both centrodes as DXF SPLINE entities for CAD, on layers named after A and B");
@@ -89,8 +90,8 @@ int run_centrodes(const CentrodesOptions& o) {
   run.commit();
 
   std::size_t finite = 0;
-  std::vector<std::string> problems;
-  for (const auto& l : result.limits) problems.push_back(limit_line(scene, sw, l));
+  const SweepSummary<double> found = summarise(result);
+  std::vector<std::string> problems = sweep_problems(scene, sw, found, run.inputs());  // as solve reports them
   for (std::size_t k = 0; k < centres.size(); ++k) {
     if (centres[k].finite) {
       ++finite;
@@ -108,7 +109,7 @@ int run_centrodes(const CentrodesOptions& o) {
     if (!o.dxf.empty()) std::cerr << scene.file << ": --dxf '" << o.dxf << "' not written: a centrode that is one point has no curve to draw as a spline\n";
   }
   for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
-  return finite == centres.size() ? 0 : 1;
+  return std::max(sweep_status(found, run.inputs().size()), finite == centres.size() ? 0 : 1);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // curvature where the contours touch, undercut, conformity.
 #include "commands.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -172,7 +173,7 @@ int run_check(const CheckOptions& o) {
   for (const auto& l : design.section) std::cout << l << "\n";
   for (const auto& f : design.findings) std::cerr << scene.file << ": " << f << "\n";
   for (const auto& p : problems) std::cerr << scene.file << ": " << p << "\n";
-  return design.findings.empty() && problems.empty() ? 0 : 1;
+  return std::max(sweep_status(found, inputs.size()), design.findings.empty() ? 0 : 1);
 }
 
 }  // namespace

@@ -91,6 +91,8 @@ std::vector<std::string> interference_lines(const io::Scene& scene, const Sweep&
 
 // ---- rollkin solve ---------------------------------------------------------------------------------------
 
+constexpr int kMaxJobs = 4096;  // --jobs: threads at once (a run never starts more workers than scenes)
+
 struct SolveOptions {
   SweepRequest sweep;
   std::vector<std::string> scenes;  // the scene files given; sweep.scene is each in turn
@@ -126,11 +128,13 @@ Command solve_command(CLI::App& rollkin) {
                 "print the assembly report, how imported contours were converted and the design check (as 'rollkin check')");
   app->add_flag("--interference", o->interference,
                 "check every solved pose for contours that penetrate or touch twice (findings make exit 1)");
-  app->add_option("-j,--jobs", o->jobs,
-                  "with several scenes: how many are solved at once; with one: how many threads format its --csv "
-                  "(default 0: one per core)")
+  // Read as text and checked by rollkin (CLI11's own conversion to int said only "Could not convert" for 1e9).
+  app->add_option_function<std::string>("-j,--jobs", [o](const std::string& v) { o->jobs = static_cast<int>(*finite_number(v)); },
+                                         "with several scenes: how many are solved at once; with one: how many threads "
+                                         "format its --csv (default 0: one per core; at most " + std::to_string(kMaxJobs) + ")")
       ->type_name("N")
-      ->check(number("a number of scenes or threads at once (0: one per core)", [](double v) { return v >= 0 && v == std::floor(v); }));
+      ->check(number("a whole number of scenes or threads at once from 0 (one per core) to " + std::to_string(kMaxJobs),
+                     [](double v) { return v >= 0 && v <= kMaxJobs && v == std::floor(v); }));
   app->footer(
       "Loads the scene, assembles the mechanism and sweeps its input over the scene's \"sweep\" (--from/--to/\n"
       "--step override it), following one branch in both directions from the assembly pose.\n"
@@ -272,7 +276,7 @@ int solve_scene(const SolveOptions& o, std::optional<io::Scene> loaded, std::ost
   }
   for (const auto& p : problems) err << scene.file << ": " << p << "\n";
   const bool forces_ok = !forces || !forces->separation_or_slip;
-  return solved == inputs.size() && assembly.ok() && clashes.empty() && forces_ok ? 0 : 1;
+  return std::max({sweep_status(found, inputs.size()), clashes.empty() ? 0 : 1, forces_ok ? 0 : 1});
 }
 
 /// The options of each of several scenes: every {scene} in every output name replaced by the scene file's

@@ -8,6 +8,7 @@
 #include "rollkin/output/synthesis_files.hpp"
 #include "rollkin/synthesis/scene_envelope.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -29,7 +30,6 @@ struct SynthesizeEnvelopeOptions {
   std::string contour;             // B.name
   std::string out;
   std::optional<double> tolerance, start;
-  std::string tolerance_text, start_text;
 };
 int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o);
 
@@ -43,7 +43,7 @@ Command synthesize_command(CLI::App& rollkin) {
   cam->add_option("SPEC", o->spec, "the cam spec (JSON: base_radius, rotation, follower, contact, law, tolerance)")
       ->required()
       ->type_name("SPEC.json");
-  add_output(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
+  add_prefix(*cam, "--out", o->out, "prefix of PREFIX.txt (profile points), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
       ->required()
       ->type_name("PREFIX");
   cam->footer(
@@ -51,16 +51,17 @@ Command synthesize_command(CLI::App& rollkin) {
       "relative to the turning cam, sampled so that the fitted spline is within a sixteenth of the tolerance of\n"
       "the true profile. Writes PREFIX.txt (closed point file, the cam's frame), PREFIX.dxf (one SPLINE),\n"
       "PREFIX.svg (cam and follower at the law's start) and PREFIX.json (the scene: revolute 'cam' theta,\n"
-      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing. Then it reads PREFIX.json, solves\n"
-      "one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
+      "follower pair 'follower' s or phi, cam pair 'contact'), all or nothing: before any is committed it reads\n"
+      "PREFIX.json back (with the point file it names), solves one turn and prints the worst deviation of the analysed follower motion from the law, the largest\n"
       "pressure angle and the smallest radius of curvature of the profile at the contacts.\n"
       "Exit status: 0 the analysed motion matches the law to the spec's tolerance (default 1e-9 of the stroke);\n"
       "1 it does not, or the profile is undercut (the cam angles where it folds on stderr; nothing written);\n"
-      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory.");
+      "2 bad input (spec, law file, an output that would overwrite an input); 3 out of memory; 4 internal error (a\n"
+      "file it wrote that its own reader refuses; nothing written).");
   auto g = std::make_shared<SynthesizeCamOptions>();
   CLI::App* gears = app->add_subcommand("gears", "a non-circular gear pair from its transmission function (docs/synthesis.md)");
   gears->add_option("SPEC", g->spec, "the gear spec (JSON: centre_distance, transmission, tolerance)")->required()->type_name("SPEC.json");
-  add_output(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
+  add_prefix(*gears, "--out", g->out, "prefix of PREFIX.1.txt, PREFIX.2.txt (pitch curves), PREFIX.dxf, PREFIX.svg and PREFIX.json (scene)")
       ->required()
       ->type_name("PREFIX");
   gears->footer(
@@ -71,17 +72,18 @@ Command synthesize_command(CLI::App& rollkin) {
       "gear2, rolling pair mesh), all or nothing, then solves that scene over one turn and prints the worst\n"
       "deviation of gear2.phi from -f(gear1.phi).\n"
       "Exit status: 0 within the tolerance (default 1e-9 of a turn); 1 not, or the pair does not close (nothing\n"
-      "written); 2 bad input; 3 out of memory.");
+      "written); 2 bad input; 3 out of memory; 4 internal error (nothing written).");
   auto e = std::make_shared<SynthesizeEnvelopeOptions>();
   CLI::App* env = app->add_subcommand("envelope", "the conjugate on link A of a contour of link B under the scene's sweep");
   add_sweep_options(*env, e->sweep);
   env->add_option("--links", e->links, "the links A (carries the envelope) and B (carries the contour)")->expected(2)->required()->type_name("A B");
   env->add_option("--contour", e->contour, "B's contour, as the scene's pairs name it (B.name)")->required()->type_name("B.NAME");
-  add_output(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
-  add_number(*env, "--tolerance", e->tolerance, e->tolerance_text,
-             "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
-  add_number(*env, "--start", e->start, e->start_text,
-             "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
+  add_prefix(*env, "--out", e->out, "prefix of PREFIX.txt (the envelope in A's frame) and PREFIX.dxf")->required()->type_name("PREFIX");
+  // Checked by the library's rule that Python's envelope() shares (synthesis/scene_envelope.hpp).
+  add_checked_number(*env, "--tolerance", e->tolerance, synthesis::envelope_tolerance_problem,
+                     "largest mid-pose distance of the fitted spline from the envelope (scene length units; default 1e-9 of the scene's size)");
+  add_checked_number(*env, "--start", e->start, synthesis::envelope_start_problem,
+                     "B's contour parameter near the contact at the sweep's first pose (internal units: radians for angles; default: the root nearest the instant centre)");
   env->footer(
       "Solves the sweep, interpolates B's pose relative to A (cubic Hermite in the input, from poses and rates)\n"
       "and computes the envelope of B's contour from the equation of meshing n . v_rel = 0, sampled until the\n"
@@ -125,8 +127,13 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
               << io::format_number(j.left) << " to " << io::format_number(j.right) << "\n";
   }
 
+  // The library's messages of the synthesis named no key: each step says here which input governs it.
+  const StepInput sizes{o.spec, "base_radius, follower, contact, law, tolerance",
+                        "the cam is sampled until its spline is within \"tolerance\" (default 1e-9 of the stroke) of the "
+                        "true profile; give a larger \"tolerance\", or sizes (base_radius, roller, offset, lift) that differ by "
+                        "fewer orders of magnitude"};
   g_doing = "computing the cam profile";
-  const synthesis::CamProfile profile = synthesis::synthesise_cam(spec);
+  const synthesis::CamProfile profile = from_input(sizes, [&] { return synthesis::synthesise_cam(spec); });
   if (!profile.envelope.defects.empty()) {
     for (const auto& d : profile.envelope.defects)
       std::cerr << o.spec << ": undercut: at cam angle " << angle_value(spec, d.t) << " " << d.what
@@ -137,17 +144,19 @@ int run_synthesize_cam(const SynthesizeCamOptions& o) {
   }
 
   g_doing = "building the output files";
-  const std::string profile_name = std::filesystem::path(txt).filename().string();
-  output::CamFiles files = output::cam_files(spec, profile, profile_name);
+  output::CamFiles files = from_input(sizes, [&] { return output::cam_files(spec, profile, std::filesystem::path(txt).filename().string()); });
   outputs.set(i_txt, std::move(files.profile));
   outputs.set(i_dxf, std::move(files.dxf));
   outputs.set(i_svg, std::move(files.svg));
   outputs.set(i_scene, std::move(files.scene));
-  g_doing = "writing the output files";
-  outputs.commit();
-
-  g_doing = "analysing the cam (round trip)";
-  const synthesis::CamRoundTrip rt = synthesis::cam_round_trip(spec, scene_file);
+  // The round trip reads the files before they are committed (io::OutputSet::commit(check)): when it fails,
+  // nothing is written, and a file of this run that rollkin's reader refuses is an internal error (exit 4).
+  synthesis::CamRoundTrip rt;
+  outputs.commit([&] {
+    g_doing = "analysing the cam (round trip)";
+    rt = synthesis::cam_round_trip(spec, scene_file);
+    g_doing = "writing the output files";
+  });
   std::cout << o.spec << ": profile of " << profile.points.size() << " points (spline within "
             << io::format_number(profile.profile_tolerance, 3) << " of the envelope at every mid-point) written to " << txt << ", "
             << dxf << ", " << svg << ", " << scene_file << "\n";
@@ -181,19 +190,26 @@ int run_synthesize_gears(const SynthesizeCamOptions& o) {
               << ", not one turn (gear 2 would not come back to its start after a turn of gear 1); nothing written\n";
     return 1;
   }
+  const StepInput curves{o.spec, "transmission, centre_distance, tolerance",
+                         "the pitch curves are sampled until their splines are within \"tolerance\" (default 1e-9 of a turn) "
+                         "times centre_distance of the true curves, and gear 2 must turn as long as gear 1 does (f' > 0 at "
+                         "every angle); give a larger \"tolerance\" or a transmission whose speed ratio varies less"};
   g_doing = "computing the pitch curves";
-  const synthesis::GearDesign d = synthesis::synthesise_gears(spec);
-  output::GearFiles files =
-      output::gear_files(spec, d, std::filesystem::path(f1).filename().string(), std::filesystem::path(f2).filename().string());
+  const synthesis::GearDesign d = from_input(curves, [&] { return synthesis::synthesise_gears(spec); });
+  output::GearFiles files = from_input(curves, [&] {
+    return output::gear_files(spec, d, std::filesystem::path(f1).filename().string(), std::filesystem::path(f2).filename().string());
+  });
   outputs.set(i1, std::move(files.gear1));
   outputs.set(i2, std::move(files.gear2));
   outputs.set(i_dxf, std::move(files.dxf));
   outputs.set(i_svg, std::move(files.svg));
   outputs.set(i_scene, std::move(files.scene));
-  g_doing = "writing the output files";
-  outputs.commit();
-  g_doing = "analysing the gears (round trip)";
-  const synthesis::GearRoundTrip rt = synthesis::gear_round_trip(spec, scene_file);
+  synthesis::GearRoundTrip rt;  // read back before anything is committed, as the cam's
+  outputs.commit([&] {
+    g_doing = "analysing the gears (round trip)";
+    rt = synthesis::gear_round_trip(spec, scene_file);
+    g_doing = "writing the output files";
+  });
   std::cout << o.spec << ": the pair closes; " << d.pair.gear1.size() << " points per pitch curve (splines within "
             << io::format_number(d.profile_tolerance, 3) << " at every mid-angle) written to " << f1 << ", " << f2 << ", " << dxf << ", "
             << svg << ", " << scene_file << "\n";
@@ -223,19 +239,25 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   const int contour = m.find_contour(o.contour);
   if (contour < 0 || m.contours[contour].link() != b)
     throw UsageError("--contour: no contour \"" + o.contour + "\" on link \"" + o.links[1] + "\" (give it as " + o.links[1] + ".NAME)");
-  if (o.tolerance && !(*o.tolerance > 0)) throw UsageError("--tolerance: expected a distance > 0, got " + o.tolerance_text);
   SolveData<double> sd(m);
   VectorX<double> q;
   g_doing = "assembling the mechanism";
   const SolveReport<double> assembly = run.assemble(sd, q);
   g_doing = "solving the sweep";
   const SweepResult<double> result = run.solve(sd, q, assembly);
-  for (const auto& l : result.limits) std::cerr << scene.file << ": " << limit_line(scene, sw, l) << "\n";
+  const SweepSummary<double> found = summarise(result);
+  for (const auto& p : sweep_problems(scene, sw, found, run.inputs())) std::cerr << scene.file << ": " << p << "\n";
   g_doing = "computing the envelope";
-  const synthesis::SweepMotion motion(m, result, a, b);
-  const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
   const double tol = o.tolerance ? *o.tolerance : 1e-9 * m.length_scale;
-  const synthesis::Envelope<double> env = synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  const StepInput motion_input{scene.file, "sweep",
+                               "the envelope needs B's motion at every pose of the sweep and a spline within --tolerance (default "
+                               "1e-9 of the scene's size) of it; give --from/--to within the poses that solve (limits above), "
+                               "--start near the contact, or a larger --tolerance"};
+  const synthesis::Envelope<double> env = from_input(motion_input, [&] {
+    const synthesis::SweepMotion motion(m, result, a, b);
+    const synthesis::EnvelopeProblem<double> pr = synthesis::scene_envelope_problem(m, motion, contour, o.start);
+    return synthesis::envelope(pr, synthesis::EnvelopeOptions{tol, 256, 400000});
+  });
   const std::vector<Vec2<double>> pts = env.points();
   run.set_output("--out (points)", [&] {
     return io::point_file_text("envelope of " + o.contour + " in the frame of link " + o.links[0] +
@@ -244,7 +266,9 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
   });
   const bool drawable = env.defects.empty() && pts.size() >= 4;
   if (drawable) {
-    run.set_output("--out (DXF)", [&] { return output::envelope_dxf(pts, env.closed, scene.length_unit); });
+    // Fitted now, before anything is written: a failure of the fit names the input (from_input).
+    std::string dxf_text = from_input(motion_input, [&] { return output::envelope_dxf(pts, env.closed, scene.length_unit); });
+    run.set_output("--out (DXF)", [text = std::move(dxf_text)] { return text; });
   } else {
     run.omit_output("--out (DXF)");
   }
@@ -255,7 +279,7 @@ int run_synthesize_envelope(const SynthesizeEnvelopeOptions& o) {
             << " at every mid-pose (tolerance " << io::format_number(tol, 3) << "), written to " << txt << (drawable ? " and " + dxf : "") << "\n";
   for (const auto& d : env.defects)
     std::cerr << scene.file << ": at " << input_text(scene, sw, d.t) << ": " << d.what << "\n";
-  return env.defects.empty() && result.limits.empty() ? 0 : 1;
+  return std::max(sweep_status(found, run.inputs().size()), env.defects.empty() ? 0 : 1);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,7 +20,8 @@ thread_local const char* g_doing = "starting";  // per thread: several scenes ma
 const char* kExitStatus =
     "Exit status: 0 all requested poses solved; 1 some not (limits or singular poses on stderr, solved rows\n"
     "still written); 2 bad input or command line, or a request above --max-steps (nothing written);\n"
-    "3 out of memory (nothing written).";
+    "3 out of memory (nothing written); 4 internal error: a defect of rollkin, such as a file it wrote that its\n"
+    "own reader refuses (nothing written).";
 
 // ---- option values: fully parsed, checked before anything is read ------------------------------------------
 
@@ -53,6 +55,19 @@ const CLI::Validator kFileName(
     },
     "", "");
 
+/// A check of an output prefix (PREFIX of PREFIX.txt, PREFIX.dxf, ...): a file name must follow its last '/',
+/// or the outputs would be hidden files ".txt", ".dxf" in that directory.
+const CLI::Validator kPrefix(
+    [](std::string& text) -> std::string {
+      const std::size_t slash = text.find_last_of('/');
+      const std::string name = slash == std::string::npos ? text : text.substr(slash + 1);
+      if (name.empty() || name == "." || name == "..")
+        return "expects a prefix that ends in a file name (e.g. \"" + (slash == std::string::npos ? std::string() : text.substr(0, slash + 1)) +
+               "cam\" for cam.txt, cam.dxf, ...), got \"" + text + "\", which would write hidden files such as \".txt\"";
+      return {};
+    },
+    "", "");
+
 }  // namespace
 
 CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, std::string& text,
@@ -65,8 +80,37 @@ CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<do
       ->check(number("a number"));
 }
 
+namespace {
+
+/// `text` read by strtod, all of it (nan and inf included); nullopt for text that is not a number.
+std::optional<double> any_number(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+CLI::Option* add_checked_number(CLI::App& app, const std::string& name, std::optional<double>& slot,
+                                std::string (*problem)(double), const std::string& help) {
+  return app.add_option_function<std::string>(name, [&slot](const std::string& v) { slot = any_number(v); }, help)
+      ->type_name("V")
+      ->check(CLI::Validator(
+          [problem](std::string& text) -> std::string {
+            const std::optional<double> v = any_number(text);
+            if (!v) return "expects a number, got \"" + text + "\"";
+            return problem(*v);
+          },
+          "", ""));
+}
+
 CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slot, const std::string& help) {
   return app.add_option(name, slot, help)->type_name("FILE")->check(kFileName);
+}
+
+CLI::Option* add_prefix(CLI::App& app, const std::string& name, std::string& slot, const std::string& help) {
+  return add_output(app, name, slot, help)->type_name("PREFIX")->check(kPrefix);
 }
 
 // ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
@@ -78,7 +122,7 @@ void add_sweep_options(CLI::App& app, SweepRequest& r, std::vector<std::string>*
     app.add_option("SCENE", r.scene, "the scene: a JSON file (docs/scene_format.md)")->required()->type_name("");
   add_number(app, "--from", r.from, r.from_text, "first input value (overrides the scene's \"sweep\"; angles in the scene's unit)");
   add_number(app, "--to", r.to, r.to_text, "last input value (overrides the scene's \"sweep\")");
-  add_number(app, "--step", r.step, r.step_text, "step between input values, signed from --from toward --to");
+  add_number(app, "--step", r.step, r.step_text, "step between input values, with the sign of --to minus --from (negative for a decreasing sweep: --from 100 --to 0 --step -1)");
   app.add_option("--max-steps", r.max_steps,
                  "refuse (exit 2) a sweep estimated to need more than N continuation sub-steps, or of more than N "
                  "values (default 1e7)")
@@ -192,6 +236,19 @@ std::vector<std::string> sweep_problems(const io::Scene& scene, const Sweep& sw,
   return problems;
 }
 
+io::InputError input_error_of_step(const StepInput& input, const std::string& message) {
+  // The library's own prefix ("envelope: ", "gear synthesis: ", "SampledProfile: ") names code, not input.
+  std::string what = message;
+  const std::size_t colon = what.find(": ");
+  if (colon != std::string::npos && colon <= 24 && std::count(what.begin(), what.begin() + static_cast<long>(colon), ' ') <= 1)
+    what.erase(0, colon + 2);
+  return io::InputError(input.file, input.location, what + " (while " + g_doing + ")" + (input.advice.empty() ? "" : "; " + input.advice));
+}
+
+int sweep_status(const SweepSummary<double>& summary, std::size_t requested) {
+  return summary.assembly.ok() && summary.solved() == requested ? 0 : 1;
+}
+
 int error_status(std::ostream& err) {
   try {
     throw;
@@ -202,6 +259,9 @@ int error_status(std::ostream& err) {
   } catch (const io::InputError& e) {
     err << e.what() << "\n";
     return 2;
+  } catch (const io::InternalError& e) {
+    err << "rollkin: internal error: " << e.what() << "\n";
+    return 4;
   } catch (const std::exception& e) {
     err << "rollkin: error: " << e.what() << "\n";
     return 2;

@@ -19,6 +19,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -42,6 +43,38 @@ extern thread_local const char* g_doing;
 /// Inside a catch block: the message for the exception being handled (other than a UsageError) on `err`, and
 /// the exit status: 3 out of memory, 2 anything else (bad input, an output that cannot be written).
 int error_status(std::ostream& err);
+
+/// The input a step of a command depends on, for an error the library raises without naming one.
+struct StepInput {
+  std::string file;      // the file the user gave (the spec, the scene)
+  std::string location;  // the keys or options that govern the step ("tolerance", "--tolerance", "sweep")
+  std::string advice;    // what to change
+};
+
+/// A message of the library that names no input ("gear synthesis: more than 2^20 samples needed") as an
+/// io::InputError naming the input that caused it: "<file>: <location>: <message> (while <doing>); <advice>".
+io::InputError input_error_of_step(const StepInput& input, const std::string& message);
+
+/// Runs `step`; an error out of it that names no input (any std::exception but io::InputError, io::OutputError,
+/// io::InternalError, UsageError and std::bad_alloc) becomes input_error_of_step (exit 2). The one place where a
+/// command's boundary translates the library's messages (docs/reliability.md, "Outputs, signals and messages").
+template <class Step> auto from_input(const StepInput& input, Step&& step) -> decltype(step()) {
+  try {
+    return step();
+  } catch (const io::InputError&) {
+    throw;
+  } catch (const io::OutputError&) {
+    throw;
+  } catch (const io::InternalError&) {
+    throw;
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw input_error_of_step(input, e.what());
+  }
+}
 
 /// The exit statuses, as the footer of every command's --help.
 extern const char* kExitStatus;
@@ -75,8 +108,17 @@ CLI::Validator number(const std::string& expected, std::function<bool(double)> a
 CLI::Option* add_number(CLI::App& app, const std::string& name, std::optional<double>& slot, std::string& text,
                         const std::string& help);
 
+/// The option `name` storing a number in `slot`, read by strtod (nan and inf included) and checked by `problem`, a
+/// rule of the library that Python shares ("" when fine, else what is wrong): "--start: expected ..., got nan".
+CLI::Option* add_checked_number(CLI::App& app, const std::string& name, std::optional<double>& slot,
+                                std::string (*problem)(double), const std::string& help);
+
 /// The option `name` storing an output file name in `slot`.
 CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& slot, const std::string& help);
+
+/// The option `name` storing an output prefix in `slot` (PREFIX of PREFIX.txt, PREFIX.dxf, ...): an output file
+/// name that must end in a name ("./" and "out/" are refused: they would write hidden files ".txt", ".dxf").
+CLI::Option* add_prefix(CLI::App& app, const std::string& name, std::string& slot, const std::string& help);
 
 // ---- what every sweeping command shares: scene, sweep overrides, bounded work, outputs --------------------
 
@@ -128,6 +170,11 @@ std::string limit_line(const io::Scene& scene, const Sweep& sw, const SolveRepor
 /// sweep's requested inputs, internal units).
 std::vector<std::string> sweep_problems(const io::Scene& scene, const Sweep& sw, const SweepSummary<double>& summary,
                                         const std::vector<double>& inputs);
+
+/// The one exit status of a sweep's poses, for every command that solves one (solve, check, centrodes, synthesize
+/// envelope): 0 when the assembly succeeded and every requested pose is ok, 1 otherwise (a limit, a pose not
+/// reached, a singular pose: the lines of sweep_problems). One pose, one status, whichever command solves it.
+int sweep_status(const SweepSummary<double>& summary, std::size_t requested);
 
 // ---- the design check (rollkin check, solve --verbose; src/cli/command_check.cpp) --------------------------
 

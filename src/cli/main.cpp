@@ -12,8 +12,9 @@
 // Exit codes: 0 every requested input value solved; 1 some were not (a limit met, assembly failed, a singular
 // pose): one line per limit or singular pose on stderr, the solved rows still written; 2 bad input (scene file, contour files, command line,
 // an output that would overwrite an input, an output that cannot be written): the message on stderr and no
-// output file written; 3 out of memory ("out of memory while ..."), no output file written. Outputs are all
-// or nothing (rollkin/io/output_set.hpp).
+// output file written; 3 out of memory ("out of memory while ..."), no output file written; 4 internal error (a
+// file rollkin wrote that its own reader refuses), no output file written. Outputs are all or nothing
+// (rollkin/io/output_set.hpp), and no temporary outlives a SIGINT or SIGTERM (rollkin/io/temporary_file.hpp).
 //
 // --animate writes one self-contained HTML page (inline SVG and script, no external file) that plays the
 // solved poses: a play/pause button, a slider over the poses, the input value and each pose's status
@@ -24,6 +25,8 @@
 // what they share is in commands.hpp. main() lists the commands. A new command is one more such file, its
 // declaration in commands.hpp and one line in main().
 #include "commands.hpp"
+
+#include "rollkin/io/temporary_file.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -118,6 +121,9 @@ int usage_error(const std::string& what, const CLI::App* command, const std::vec
 
 int main(int argc, char** argv) {
   using namespace rollkin::cli;
+  // SIGINT, SIGTERM, SIGHUP, SIGQUIT: no temporary outlives the process (docs/reliability.md, "Outputs,
+  // signals and messages (issue 37)").
+  rollkin::io::install_signal_cleanup();
   CLI::App rollkin("rollkin: kinematic analysis of planar mechanisms with rolling pairs", "rollkin");
   rollkin.set_version_flag("--version", "rollkin " ROLLKIN_VERSION);
   rollkin.get_formatter()->column_width(24);

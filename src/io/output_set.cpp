@@ -1,10 +1,15 @@
 #include "rollkin/io/output_set.hpp"
 
+#include "rollkin/io/input_error.hpp"
+#include "rollkin/io/input_file.hpp"
+#include "rollkin/io/temporary_file.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <utility>
 
 #include <fcntl.h>
@@ -85,9 +90,7 @@ OutputSet::OutputSet(std::vector<std::string> inputs) {
 
 OutputSet::OutputSet(std::vector<InputFile> inputs) : inputs_(std::move(inputs)) {}
 
-OutputSet::~OutputSet() {
-  for (const auto& t : temporaries_) ::unlink(t.c_str());
-}
+OutputSet::~OutputSet() = default;
 
 std::string OutputSet::resolve_target(const std::string& path) {
   std::string p = path;
@@ -151,42 +154,50 @@ void OutputSink::flush() {
   buffer_.clear();
 }
 
-void OutputSet::commit() {
+void OutputSet::commit(const std::function<void()>& check) {
   outputs_.erase(std::remove_if(outputs_.begin(), outputs_.end(), [](const Output& o) { return o.omitted; }), outputs_.end());
   for (const auto& o : outputs_)
     if (!o.has_content) throw OutputError("internal error: no content for " + named(o.label, o.path));
-  // 1. Every temporary written and closed before any target is touched.
+  // 1. Every temporary written (unnamed, in its target's directory) before any target is touched.
   const mode_t fresh = new_file_mode();
-  std::vector<std::string> temps;
+  temporaries_.clear();
   for (const auto& o : outputs_) {
-    const fs::path t = fs::path(directory_of(o.target)) / ("." + fs::path(o.target).filename().string() + ".XXXXXX");
-    std::string name = t.string();
-    const int fd = ::mkstemp(name.data());
-    if (fd < 0) throw OutputError("cannot write " + named(o.label, o.path) + ": cannot create a temporary file in '" +
-                                  directory_of(o.target) + "': " + reason(errno));
-    temporaries_.push_back(name);
-    temps.push_back(name);
+    const std::string dir = directory_of(o.target);
+    try {
+      temporaries_.push_back(std::make_unique<TemporaryFile>(dir, "." + fs::path(o.target).filename().string() + "."));
+    } catch (const std::runtime_error& e) {
+      throw OutputError("cannot write " + named(o.label, o.path) + ": " + e.what());
+    }
+    const int fd = temporaries_.back()->fd();
     struct stat st {};
     const mode_t mode = stat_of(o.target, st) ? static_cast<mode_t>(st.st_mode & 07777) : fresh;
-    const std::string what = named(o.label, o.path) + ": error while writing '" + name + "'";
+    const std::string what = named(o.label, o.path) + ": error while writing its temporary file in '" + dir + "'";
     bool ok = ::fchmod(fd, mode) == 0;
     int err = errno;
-    if (ok && o.writer) {
-      try {  // the writer streams through the sink; the file is closed whatever happens
-        OutputSink sink(fd, what);
-        o.writer(sink);
-        sink.flush();
-      } catch (...) {
-        ::close(fd);
-        throw;
-      }
+    if (ok && o.writer) {  // the writer streams through the sink; a throw leaves the temporaries to their destructors
+      OutputSink sink(fd, what);
+      o.writer(sink);
+      sink.flush();
     } else if (ok) {
       ok = write_all(fd, o.content);
       err = errno;
     }
-    if (::close(fd) != 0 || !ok) throw OutputError("cannot write " + what + ": " + reason(ok ? errno : err));
+    if (!ok) throw OutputError("cannot write " + what + ": " + reason(err));
   }
-  // 2. Renames; a failure puts back what was already replaced.
+  // 2. Whatever else can fail runs now, reading the outputs from their temporaries.
+  if (check) run_check(check);
+  // 3. Named and renamed with the termination signals held: committed all, or (rolled back) none.
+  TerminationDeferred hold;
+  std::vector<std::string> temps;
+  for (std::size_t i = 0; i < outputs_.size(); ++i) {
+    TemporaryFile& t = *temporaries_[i];
+    try {
+      temps.push_back(t.give_name());
+    } catch (const std::runtime_error& e) {
+      throw OutputError("cannot write " + named(outputs_[i].label, outputs_[i].path) + ": " + e.what());
+    }
+    if (!t.close()) throw OutputError("cannot write " + named(outputs_[i].label, outputs_[i].path) + ": " + reason(errno));
+  }
   enum class How { Exchanged, Created, Replaced };  // Exchanged: the old content sits at the temporary's name
   struct Done {
     std::size_t index;
@@ -210,12 +221,31 @@ void OutputSet::commit() {
       throw OutputError("cannot write " + named(outputs_[i].label, outputs_[i].path) + ": cannot rename '" + temps[i] +
                         "' to it: " + reason(err) + (done.empty() ? "" : "; the outputs already replaced were restored"));
     }
+    if (!exchanged) temporaries_[i]->release_name();  // the name is the target's now
     done.push_back(Done{i, exchanged ? How::Exchanged : existed ? How::Replaced : How::Created});
   }
-  // 3. Committed: the temporaries that hold replaced content are removed, the others no longer exist.
-  for (const auto& d : done)
-    if (d.how == How::Exchanged) ::unlink(temps[d.index].c_str());
+  // 4. Committed: the temporaries that hold replaced content are removed (their destructors unlink them).
   temporaries_.clear();
+}
+
+void OutputSet::run_check(const std::function<void()>& check) {
+  std::vector<std::pair<std::string, std::string>> staged;
+  for (std::size_t i = 0; i < outputs_.size(); ++i) staged.emplace_back(outputs_[i].target, temporaries_[i]->path());
+  const StagedOutputs view(staged);
+  const std::string defect = "; nothing was written. This is a defect of rollkin: please report it with the input that produced it";
+  try {
+    check();
+  } catch (const InputError& e) {
+    throw InternalError(std::string("a file this run wrote is refused by rollkin's own reader: ") + e.what() + defect);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const OutputError&) {
+    throw;
+  } catch (const InternalError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InternalError(std::string("reading back the files this run wrote failed: ") + e.what() + defect);
+  }
 }
 
 }  // namespace rollkin::io

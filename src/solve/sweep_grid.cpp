@@ -140,8 +140,9 @@ std::string check_sweep(const Sweep& s) {
   // The numbers are formatted only for a message (a sweep is checked for every run of a batch).
   const auto from_to = [&] { return "from " + io::format_number(s.from) + " to " + io::format_number(s.to); };
   if (span != 0 && (span > 0) != (s.step > 0))
-    return "step " + io::format_number(s.step) + " has the wrong sign for a sweep " + from_to() +
-           "; expected a step with the sign of to - from";
+    return "step " + io::format_number(s.step) + " has the wrong sign for a sweep " + from_to() + "; expected " +
+           io::format_number(-s.step) + " (the step is signed: it has the sign of to - from, negative for a sweep " +
+           "that decreases)";
   // The grid counts its values exactly (integers below 2^53); how many values a run may ask for is the
   // bounded-work rule's (io/work_bound.hpp: at most max_steps).
   if (span / s.step > 9e15)

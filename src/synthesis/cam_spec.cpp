@@ -1,6 +1,8 @@
 // Reading a cam spec (docs/synthesis.md, "The cam spec"): a JSON object checked key by key, every problem an
 // InputError naming the spec file and the JSON path, what is wrong and what is expected.
+#include "rollkin/io/csv.hpp"
 #include "rollkin/io/format.hpp"
+#include "rollkin/synthesis/spec_sizes.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
@@ -11,6 +13,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace rollkin::synthesis {
 namespace {
@@ -50,6 +53,12 @@ class CamSpecReader {
   double positive(const json& v, const std::string& path, const std::string& what) const {
     const double x = js_.number(v, path, what);
     if (!(x > 0)) js_.fail(path, what + " must be > 0, got " + io::format_number(x));
+    return sized(x, path, what);
+  }
+  /// A length (or lift) the synthesis can compute with (synthesis::kSpecSizes; docs/synthesis.md).
+  double sized(double x, const std::string& path, const std::string& what) const {
+    const std::string bad = spec_size_problem(x);
+    if (!bad.empty()) js_.fail(path, what + " " + bad);
     return x;
   }
   double angle(const json& v, const std::string& path, const std::string& what, const CamSpec& spec) const {
@@ -131,7 +140,8 @@ class CamSpecReader {
     if (motion == "translating") {
       js_.object(f, "follower", {"motion", "offset"});
       spec.motion = FollowerMotion::Translating;
-      spec.offset = js_.number_or(f, "follower", "offset", 0, "the guide's offset from the cam centre (a length)");
+      spec.offset = sized(js_.number_or(f, "follower", "offset", 0, "the guide's offset from the cam centre (a length)"),
+                          "follower.offset", "the guide's offset");
       const double prime = spec.base_radius + spec.roller_radius;
       if (spec.contact == FollowerContact::Roller && !(std::abs(spec.offset) < prime))
         js_.fail("follower.offset", "|offset| " + io::format_number(std::abs(spec.offset)) + " must be less than base_radius + roller_radius = " +
@@ -142,7 +152,15 @@ class CamSpecReader {
       if (spec.contact == FollowerContact::Flat)
         js_.fail("contact.flat", "a flat face is a kind for translating followers; on an oscillating arm give it as a contour, e.g. \"contour\": {\"type\": \"line\", \"from\": 0, \"to\": 100, \"at\": {...}}");
       spec.pivot = js_.point(js_.require(f, "follower", "pivot", "the pivot [x, y]"), "follower.pivot");
+      sized(spec.pivot.x(), "follower.pivot[0]", "the pivot's x");
+      sized(spec.pivot.y(), "follower.pivot[1]", "the pivot's y");
       spec.arm = positive(js_.require(f, "follower", "arm", "the arm's length (> 0)"), "follower.arm", "the arm's length");
+      // An arm turning about the cam centre keeps its roller at one distance from it: no cam can move it (the
+      // analysis then found a 360 degree deviation). Bad geometry, said as such.
+      if (!(spec.pivot.norm() > 1e-9 * (spec.base_radius + spec.arm)))
+        js_.fail("follower.pivot", "the pivot is at the cam centre (0, 0): the arm would turn about the cam's own axis, keeping the "
+                                   "follower at one distance from it, so no cam can move it; expected a pivot away from the cam "
+                                   "centre, usually beyond base_radius + roller_radius");
       if (const json* a0 = io::JsonAccess::get(f, "start_angle")) {
         spec.start_angle = angle(*a0, "follower.start_angle", "the arm's angle", spec);
         if (spec.contact == FollowerContact::Roller) check_oscillating_start(spec);
@@ -215,17 +233,44 @@ class CamSpecReader {
         } catch (const std::invalid_argument& e) {
           js_.fail(io::child(path, "kind"), e.what());
         }
-        const double lift = js_.number_or(law[k], path, "lift", 0, "the segment's lift (negative for a return)") * lift_unit;
+        const double lift = sized(js_.number_or(law[k], path, "lift", 0, "the segment's lift (negative for a return)"),
+                                  io::child(path, "lift"), "the lift") * lift_unit;
         if (!(to > start)) js_.fail(io::child(path, "to"), "expected a cam angle after the segment's start " + io::format_number(io::from_radians(start, spec.angle_unit)));
         if (kind == RiseKind::Dwell && lift != 0) js_.fail(io::child(path, "lift"), "a dwell has no lift");
         if (kind != RiseKind::Dwell && lift == 0) js_.fail(path, "a \"" + kind_name + "\" segment needs a nonzero \"lift\"");
         segments.push_back({start, to, lift, kind});
         start = to;
       }
+      check_law_closes(segments, spec);
       spec.law = MotionLaw<double>::from_segments(segments);
     } catch (const std::invalid_argument& e) {
       js_.fail("law", e.what());
     }
+  }
+
+  /// The law ends after one turn and its lifts add up to zero (the follower comes back), said in the spec's units
+  /// with the numbers that show the difference; the same tolerances as MotionLaw::from_segments (round-off of a
+  /// turn; 64 eps of the largest displacement).
+  void check_law_closes(const std::vector<LawSegment<double>>& segments, const CamSpec& spec) const {
+    if (segments.empty()) return;
+    const double turn = 2 * pi<double>();
+    if (std::abs(segments.back().end - turn) > 64 * std::numeric_limits<double>::epsilon() * turn)
+      js_.fail(io::child(io::index("law", segments.size() - 1), "to"),
+               "the law ends at " + io::format_double(io::from_radians(segments.back().end, spec.angle_unit)) + " " +
+                   io::unit_label(spec.angle_unit) + ", not after one turn; expected " +
+                   io::format_double(io::from_radians(turn, spec.angle_unit)) + " " + io::unit_label(spec.angle_unit));
+    const double unit = spec.motion == FollowerMotion::Oscillating ? io::radians_per<double>(spec.angle_unit) : 1.0;
+    double sum = 0, largest = 0;
+    std::string terms;
+    for (const auto& g : segments) {
+      if (g.lift == 0) continue;
+      sum += g.lift;
+      largest = std::max(largest, std::abs(sum));
+      terms += (terms.empty() ? "" : g.lift < 0 ? " - " : " + ") + io::format_double(std::abs(g.lift / unit) * (terms.empty() && g.lift < 0 ? -1 : 1));
+    }
+    if (std::abs(sum) > 64 * std::numeric_limits<double>::epsilon() * largest)
+      js_.fail("law", "the lifts add up to " + terms + " = " + io::format_double(sum / unit) + ", not 0: the follower would not come "
+                      "back after one turn; make the returns' lifts add up to the rises' exactly");
   }
 
   void read_law_file(CamSpec& spec, const std::string& name, double lift_unit) {
@@ -259,7 +304,7 @@ class CamSpecReader {
 
 CamSpec read_cam_spec(const std::string& path) {
   const std::string text = io::read_input_file(path, "cam spec");
-  const json root = io::parse_json_document(text, path);
+  const json root = io::parse_json_document(text, path, io::kMaxJsonDepth, "docs/synthesis.md");
   return CamSpecReader(root, path, fs::path(path).parent_path().string()).read();
 }
 

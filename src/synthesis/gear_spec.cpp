@@ -1,6 +1,7 @@
 // Reading a gear spec (docs/synthesis.md, "Non-circular gears"): every problem an InputError naming the spec file and
 // the JSON path.
 #include "rollkin/io/format.hpp"
+#include "rollkin/synthesis/spec_sizes.hpp"
 #include "rollkin/io/input_file.hpp"
 #include "rollkin/io/json/document.hpp"
 #include "rollkin/io/point_file.hpp"
@@ -14,11 +15,31 @@
 namespace rollkin::synthesis {
 
 GearSpec read_gear_spec(const std::string& path) {
-  GearSpec spec = gear_spec_from_document(io::parse_json_document(io::read_input_file(path, "gear spec"), path), path,
+  GearSpec spec = gear_spec_from_document(io::parse_json_document(io::read_input_file(path, "gear spec"), path, io::kMaxJsonDepth, "docs/synthesis.md"), path,
                                           std::filesystem::path(path).parent_path().string());
   spec.files_read.insert(spec.files_read.begin(), path);
   return spec;
 }
+
+namespace {
+
+/// f' = 1 + g' > 0 at every row of a table and between rows: gear 2 turns one way as gear 1 does (pitch_radii of
+/// synthesis.hpp needs it). Said with the table's rows, in the spec's angle unit ("f' must be positive" named none).
+void check_speed_ratio(const GearSpec& spec, const std::vector<double>& p, const std::vector<std::size_t>& lines,
+                       const std::string& file) {
+  for (std::size_t i = 0; i + 1 < p.size(); ++i)
+    for (const double at : {p[i], 0.5 * (p[i] + p[i + 1])}) {
+      const double ratio = 1 + (*spec.table_excess)(at).v;
+      if (ratio > 0) continue;
+      throw io::InputError(file, "lines " + std::to_string(lines[i]) + "-" + std::to_string(lines[i + 1]),
+                           "the speed ratio f' = d(phi2)/d(phi1) of the spline through the rows is " + io::format_number(ratio) +
+                               " at phi1 = " + io::format_number(io::from_radians(at, spec.angle_unit)) + " " +
+                               io::unit_label(spec.angle_unit) + "; expected f' > 0 everywhere (phi2 increasing with phi1: "
+                               "gear 2 turns one way as gear 1 does); make phi2 increase more evenly between these rows");
+    }
+}
+
+}  // namespace
 
 GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::string& path, const std::string& dir) {
   using io::json;
@@ -40,6 +61,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
   spec.centre_distance = js.number(js.require(root, "", "centre_distance", "the distance of the pivots (> 0)"),
                                    "centre_distance", "a length");
   if (!(spec.centre_distance > 0)) js.fail("centre_distance", "expected a distance > 0, got " + io::format_number(spec.centre_distance));
+  if (const std::string bad = spec_size_problem(spec.centre_distance); !bad.empty()) js.fail("centre_distance", "the distance " + bad);
   const json& t = js.require(root, "", "transmission",
                              "{\"kind\": \"elliptical\", \"eccentricity\": e}, {\"kind\": \"sinusoidal\", \"k\": k} or {\"file\": \"f.txt\"}");
   if (io::JsonAccess::get(t, "file")) {
@@ -72,6 +94,7 @@ GearSpec gear_spec_from_document(const nlohmann::ordered_json& root, const std::
     } catch (const std::invalid_argument& e) {
       throw io::InputError(file.string(), "", e.what());
     }
+    check_speed_ratio(spec, p, rows.lines, file.string());
   } else {
     const std::string kind = js.string(js.require(t, "transmission", "kind", "\"elliptical\" or \"sinusoidal\""),
                                        "transmission.kind", "\"elliptical\" or \"sinusoidal\"");

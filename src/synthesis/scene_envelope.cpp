@@ -1,6 +1,8 @@
 // The envelope of a scene's contour along a solved sweep (include/rollkin/synthesis/scene_envelope.hpp).
 #include "rollkin/synthesis/scene_envelope.hpp"
 
+#include "rollkin/io/format.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -71,6 +73,16 @@ MotionJet<double> SweepMotion::operator()(double t) const {
   return MotionJet<double>{p[0], p[1], p[2], V(x[0], y[0]), V(x[1], y[1]), V(x[2], y[2])};
 }
 
+std::string envelope_start_problem(double start) {
+  if (std::isfinite(start)) return "";
+  return "expected a contour parameter (a finite number, radians for an angle parameter), got " + io::format_number(start);
+}
+
+std::string envelope_tolerance_problem(double tolerance) {
+  if (std::isfinite(tolerance) && tolerance > 0) return "";
+  return "expected a distance > 0 (scene length units), got " + io::format_number(tolerance);
+}
+
 EnvelopeProblem<double> scene_envelope_problem(const Mechanism<double>& m, const SweepMotion& motion, int contour,
                                                const std::optional<double>& u_start) {
   const Contour<double>& c = m.contours[contour];
@@ -87,6 +99,7 @@ EnvelopeProblem<double> scene_envelope_problem(const Mechanism<double>& m, const
     pr.u_hi = dom.hi;
   }
   if (u_start) {
+    if (const std::string bad = envelope_start_problem(*u_start); !bad.empty()) throw std::invalid_argument("start: " + bad);
     pr.u_guess = *u_start;
     return pr;
   }

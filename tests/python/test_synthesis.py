@@ -176,3 +176,17 @@ def test_gear_picture_draws_both_pitch_curves_at_the_assembly_pose(tmp_path):
     world = np.vstack([g["gear1"], np.asarray(g["gear2"]) + [80.0, 0.0]])
     s, _, _, worst = _pixel_map(world, np.vstack(polygons))
     assert worst <= 0.01
+
+
+def test_envelope_start_and_tolerance_are_checked_by_the_command_lines_rule():
+    """One rule for the CLI's --start/--tolerance and Python's start=/tolerance= (synthesis/scene_envelope.hpp):
+    start=nan was accepted and returned no points while the CLI refused --start nan."""
+    r = rollkin.synthesize_cam(json.loads(CAM.read_text()))
+    for kwargs, word in [({"start": float("nan")}, "start"), ({"start": float("inf")}, "start"),
+                         ({"tolerance": float("nan")}, "tolerance"), ({"tolerance": -1.0}, "tolerance")]:
+        with pytest.raises(ValueError) as e:
+            rollkin.envelope(r["scene"], "cam", "follower", "follower.roller", **kwargs)
+        assert word in str(e.value) and "expected" in str(e.value)
+    cli = subprocess.run([CLI, "synthesize", "envelope", str(SRC / "examples" / "cycloid.json"), "--links", "ground", "disk",
+                          "--contour", "disk.rim", "--start", "nan", "--out", "never"], capture_output=True, text=True)
+    assert cli.returncode == 2 and "expected a contour parameter" in cli.stderr

@@ -18,16 +18,25 @@
 // in one set holding every file any of its scenes reads (InputFile names the scene that reads each) before
 // it solves anything.
 // An output path that is a symbolic link is written to its target (as cp does); the link stays a link.
-// commit() creates one temporary per output with mkstemp(3) in the target's own directory (so no name can
-// collide with a user's file and rename(2) stays on one file system), writes and closes them all, and only
-// then renames them over their targets. A new file gets the mode a normally created file would get
-// (0666 & ~umask); a replaced file keeps its mode. On any failure before the renames, every temporary is
-// removed and no target is touched; a rename that fails after others succeeded puts the earlier targets
-// back (they were exchanged with renameat2(RENAME_EXCHANGE), so their old content is still at hand).
+// commit() creates one temporary per output in the target's own directory (so that rename(2) stays on one
+// file system): an unnamed file (O_TMPFILE), named only for the few system calls that rename it over its target,
+// with SIGINT, SIGTERM, SIGHUP and SIGQUIT held meanwhile (io/temporary_file.hpp: no named temporary outlives
+// the process). It writes them all, then runs the caller's check (commit(check)) with every output readable under
+// its own path from its temporary (io::StagedOutputs), and only then renames them over their targets. A new file
+// gets the mode a normally created file would get (0666 & ~umask); a replaced file keeps its mode. On any failure
+// before the renames (a writer, the check) no target is touched and no temporary is left; a rename that fails
+// after others succeeded puts the earlier targets back (they were exchanged with renameat2(RENAME_EXCHANGE), so
+// their old content is still at hand).
+//
+// The rule (docs/reliability.md, "Outputs, signals and messages (issue 37)"): nothing is committed until
+// everything that can fail has run. A check that reads back what the run wrote (synthesize's round trip) runs
+// inside commit(check); an io::InputError out of it means rollkin's own reader refuses a file rollkin wrote:
+// that is InternalError (exit 4 from the CLI), not the user's bad input, and nothing is written.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,6 +48,15 @@ class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// A defect of rollkin itself, such as a file it wrote that its own reader refuses. The message says what and
+/// that nothing was written.
+class InternalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class TemporaryFile;
 
 /// The temporary file a streamed output is written to, through a buffer written out in large blocks.
 class OutputSink {
@@ -92,7 +110,10 @@ class OutputSet {
   void omit(std::size_t index);
 
   /// Writes every output (all must have been set or omitted) all or nothing. Throws OutputError.
-  void commit();
+  /// `check`, when given, runs after every output is written to its temporary and before any is committed, with
+  /// read_input_file reading each output's path from its temporary; whatever it throws leaves nothing written,
+  /// and an io::InputError becomes InternalError (a file rollkin wrote that its own reader refuses).
+  void commit(const std::function<void()>& check = {});
 
   /// The file an output path is written to: the path itself, or the final target of a symbolic link.
   static std::string resolve_target(const std::string& path);
@@ -104,9 +125,10 @@ class OutputSet {
     bool has_content = false;
     bool omitted = false;
   };
+  void run_check(const std::function<void()>& check);
   std::vector<InputFile> inputs_;
   std::vector<Output> outputs_;
-  std::vector<std::string> temporaries_;  // created and not yet renamed (removed by the destructor)
+  std::vector<std::unique_ptr<TemporaryFile>> temporaries_;  // one per output until committed (none left after)
 };
 
 }  // namespace rollkin::io

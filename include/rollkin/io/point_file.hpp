@@ -79,4 +79,10 @@ class PointFileText {
 /// The point file of `points` after the comment `what`: PointFileText().comment(what).points(points).text().
 std::string point_file_text(const std::string& what, const std::vector<Vec2<double>>& points);
 
+/// A point file as rollkin writes it (src/io/point_file_writer.cpp): every line of `comment` as a "# " line, then
+/// one "x y" line per point, each number the shortest text that reads back to the same double, so that
+/// parse_point_text gives the points back bit for bit. A coordinate that is not finite would make a file the
+/// reader refuses: InternalError naming the point (docs/reliability.md, "Outputs, signals and messages").
+std::string point_file_text(const std::string& comment, const std::vector<Vec2<double>>& points);
+
 }  // namespace rollkin::io

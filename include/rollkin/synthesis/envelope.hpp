@@ -33,7 +33,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -133,6 +135,15 @@ template <class S> Meshing<S> meshing(const EnvelopeProblem<S>& pr, const S& u, 
   r.point = Vec2<S>(c * j.p.x() - s * j.p.y(), s * j.p.x() + c * j.p.y()) + m.d;
   return r;
 }
+
+namespace detail {
+/// A number for a message, three significant digits ("1e-12", "3.2e-09"): std::to_string printed 0.000000.
+inline std::string short_number(double v) {
+  std::ostringstream s;
+  s << std::setprecision(3) << v;
+  return s.str();
+}
+}  // namespace detail
 
 namespace detail {
 
@@ -318,8 +329,10 @@ template <class S> Envelope<S> envelope(const EnvelopeProblem<S>& pr, const Enve
     env.max_midpoint_deviation = worst;
     if (refined.size() == samples.size()) break;
     if (refined.size() > options.max_samples)
-      throw std::runtime_error("envelope: more than " + std::to_string(options.max_samples) +
-                               " samples needed for the tolerance " + std::to_string(options.tolerance));
+      throw std::runtime_error("envelope: more than " + std::to_string(options.max_samples) + " samples needed for the tolerance " +
+                               detail::short_number(static_cast<double>(options.tolerance)) + " (the spline through " +
+                               std::to_string(samples.size()) + " is " + detail::short_number(static_cast<double>(worst)) +
+                               " off at a mid-point)");
     samples = std::move(refined);
   }
   find_folds(samples);  // a fold narrower than the first grid shows between the refined samples

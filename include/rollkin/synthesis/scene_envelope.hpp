@@ -13,6 +13,8 @@
 #include "rollkin/solve/sweep_result.hpp"
 #include "rollkin/synthesis/envelope.hpp"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace rollkin::synthesis {
@@ -34,9 +36,16 @@ class SweepMotion {
   bool periodic_ = false;
 };
 
+/// The one check of an envelope request's numbers, shared by `rollkin synthesize envelope` (--start,
+/// --tolerance) and Python's envelope(start=, tolerance=): "" when fine, else what is wrong and what is expected.
+/// `start`: a contour parameter, finite; `tolerance`: a distance, finite and > 0.
+std::string envelope_start_problem(double start);
+std::string envelope_tolerance_problem(double tolerance);
+
 /// The envelope problem of contour `contour` (on link b) under the sweep's motion relative to link a.
 /// `u_start`: the contour parameter near the contact at the first pose; without it the root of the meshing
 /// equation nearest (in B's frame) to the instant centre at the first pose, among 2000 points of the domain.
+/// Throws std::invalid_argument for a start that envelope_start_problem refuses.
 EnvelopeProblem<double> scene_envelope_problem(const Mechanism<double>& m, const SweepMotion& motion, int contour,
                                                const std::optional<double>& u_start);
 

@@ -7,12 +7,14 @@
 
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
+#include "rollkin/io/temporary_file.hpp"
 #include "rollkin/io/units.hpp"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <limits>
 #include <optional>
@@ -177,33 +179,25 @@ std::size_t check_group_structure(const std::string& text, const std::string& fi
   return pairs;
 }
 
-/// A private temporary copy of a text, removed when it goes out of scope.
+/// A private temporary copy of a text for libdxflib, which reads a file by name: an unnamed file in $TMPDIR
+/// opened through /proc/self/fd/N (io::TemporaryFile), so that nothing is left whatever ends the run.
 class TempFile {
  public:
-  explicit TempFile(const std::string& text) {
-    std::string pattern = (std::filesystem::temp_directory_path() / "rollkin-dxf-XXXXXX").string();
-    const int fd = mkstemp(pattern.data());
-    if (fd < 0) throw std::runtime_error("cannot create a temporary file for the DXF text in " + pattern);
-    path_ = pattern;
+  explicit TempFile(const std::string& text) : file_(std::filesystem::temp_directory_path().string(), "rollkin-dxf-") {
     std::size_t done = 0;
     while (done < text.size()) {
-      const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+      const ssize_t n = ::write(file_.fd(), text.data() + done, text.size() - done);
+      if (n < 0 && errno == EINTR) continue;
       if (n <= 0) break;
       done += static_cast<std::size_t>(n);
     }
-    ::close(fd);
-    if (done != text.size()) {
-      std::remove(path_.c_str());
-      throw std::runtime_error("cannot write the temporary copy " + path_ + " of the DXF text");
-    }
+    if (done != text.size() || !file_.close())
+      throw std::runtime_error("cannot write the temporary copy of the DXF text in " + std::filesystem::temp_directory_path().string());
   }
-  ~TempFile() { std::remove(path_.c_str()); }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  const std::string& path() const { return path_; }
+  std::string path() const { return file_.path(); }
 
  private:
-  std::string path_;
+  TemporaryFile file_;
 };
 
 /// Runs the collector's checks over the group pairs of `text` as libdxflib will deliver them (a code line and
@@ -328,9 +322,10 @@ Drawing read_drawing(const std::string& text, const std::string& disk_path, cons
   {
     // libdxflib reads to the end of the file, EOF or not: it is given the text up to group 0 EOF.
     std::optional<TempFile> copy;
-    if (disk_path.empty() || end < text.size()) copy.emplace(text.substr(0, end));
+    const std::string opened = disk_path.empty() ? disk_path : opened_path(disk_path);  // a staged output's temporary
+    if (opened.empty() || end < text.size()) copy.emplace(text.substr(0, end));
     DL_Dxf reader;
-    if (!reader.in(copy ? copy->path() : disk_path, &collector)) throw InputError(file, "", "libdxflib could not open the DXF file");
+    if (!reader.in(copy ? copy->path() : opened, &collector)) throw InputError(file, "", "libdxflib could not open the DXF file");
   }
   Drawing d;
   d.entities = std::move(collector.entities);

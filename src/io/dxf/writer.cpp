@@ -1,8 +1,12 @@
 #include "rollkin/io/dxf/writer.hpp"
 
+#include "rollkin/io/temporary_file.hpp"
+
 #include <dxflib/dl_dxf.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -16,28 +20,37 @@
 namespace rollkin::io {
 namespace {
 
-/// libdxflib writes to a named file only: a private scratch file (mkstemp), removed when done.
+/// libdxflib writes to a file by name only: an unnamed scratch file in $TMPDIR, opened by libdxflib through
+/// /proc/self/fd/N (io::TemporaryFile), so that nothing is left whatever ends the run.
 class ScratchFile {
  public:
-  ScratchFile() {
-    path_ = (std::filesystem::temp_directory_path() / "rollkin-dxf-XXXXXX").string();
-    const int fd = ::mkstemp(path_.data());
-    if (fd < 0) throw std::runtime_error("cannot make a scratch file for the DXF writer in " + path_ + ": " + std::strerror(errno));
-    ::close(fd);
-  }
-  ~ScratchFile() { std::filesystem::remove(path_); }
-  ScratchFile(const ScratchFile&) = delete;
-  ScratchFile& operator=(const ScratchFile&) = delete;
-  const std::string& path() const { return path_; }
+  ScratchFile() : file_(std::filesystem::temp_directory_path().string(), "rollkin-dxf-") {}
+  std::string path() const { return file_.path(); }
   std::string contents() const {
-    std::ifstream in(path_, std::ios::binary);
+    std::ifstream in(file_.path(), std::ios::binary);
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
   }
 
  private:
-  std::string path_;
+  TemporaryFile file_;
+};
+
+/// libdxflib's writer with every real written as the shortest decimal that reads back to the same double
+/// (std::to_chars). DL_WriterA::dxfReal prints "%.16f": 16 digits after the point, so a contour of size 1e-12
+/// kept 4 significant digits and one of size 1e-17 was written as zeros (a degenerate SPLINE the reader
+/// refuses), found by the writers' contract test (tests/test_io_writers_contract.cpp). A magnitude below
+/// 2.2e-308 (subnormal) is written as 0: the reader's range (io/dxf.hpp), and below any drawing's round-off.
+class ExactWriter : public DL_WriterA {
+ public:
+  using DL_WriterA::DL_WriterA;
+  void dxfReal(int gc, double value) const override {
+    if (std::fpclassify(value) == FP_SUBNORMAL) value = 0;
+    char text[32];
+    const std::to_chars_result r = std::to_chars(text, text + sizeof text, value);
+    dxfString(gc, std::string(text, r.ptr));
+  }
 };
 
 /// $INSUNITS code of a scene's length unit label (DXF reference: 1 in, 2 ft, 4 mm, 5 cm, 6 m; 0 unitless).
@@ -135,8 +148,11 @@ std::string dxf_text(const std::vector<DxfSpline>& splines, const std::string& l
   ScratchFile scratch;
   {
     DL_Dxf dxf;
-    std::unique_ptr<DL_WriterA> dw(dxf.out(scratch.path().c_str(), DL_Codes::AC1015));
-    if (!dw) throw std::runtime_error("the DXF writer cannot open its scratch file " + scratch.path());
+    // DL_Dxf::out sets the document's version; its writer is replaced by the exact one on the same file.
+    if (!std::unique_ptr<DL_WriterA>(dxf.out(scratch.path().c_str(), DL_Codes::AC1015)))
+      throw std::runtime_error("the DXF writer cannot open its scratch file " + scratch.path());
+    std::unique_ptr<DL_WriterA> dw = std::make_unique<ExactWriter>(scratch.path().c_str(), DL_Codes::AC1015);
+    if (dw->openFailed()) throw std::runtime_error("the DXF writer cannot open its scratch file " + scratch.path());
     dxf.writeHeader(*dw);
     dw->dxfString(9, "$INSUNITS");
     dw->dxfInt(70, insunits_code(length_unit));

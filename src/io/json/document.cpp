@@ -61,8 +61,9 @@ std::string without_prefix(const std::string& what) {
 /// container, values placed into the innermost one) with the JSON path, duplicate keys and depth tracked.
 class DocumentBuilder {
  public:
-  DocumentBuilder(const std::string& text, const std::string& file, std::size_t max_depth, const char* const& read_to)
-      : text_(text), file_(file), max_depth_(max_depth), read_to_(read_to) {}
+  DocumentBuilder(const std::string& text, const std::string& file, std::size_t max_depth, const char* const& read_to,
+                  const std::string& format)
+      : text_(text), file_(file), format_(format), max_depth_(max_depth), read_to_(read_to) {}
 
   bool null() { return place(json(nullptr)); }
   bool boolean(bool b) { return place(json(b)); }
@@ -97,10 +98,10 @@ class DocumentBuilder {
     if (e.id == 406)  // nlohmann: out_of_range.406, a number that overflows a double
       fail(line_column(text_, position), "number " + excerpt(token) + (where.empty() ? "" : " at " + where) +
                                              " is out of the range of a double (magnitude above 1.8e308); expected "
-                                             "a finite number in the scene's units");
+                                             "a finite number (" + format_ + ")");
     fail(line_column(text_, position), "malformed JSON: " + excerpt(without_prefix(e.what()), 200) +
                                            (where.empty() ? "" : " (in " + where + ")") +
-                                           "; expected valid JSON as described in docs/scene_format.md");
+                                           "; expected valid JSON as described in " + format_);
   }
 
   json take() { return std::move(root_); }
@@ -165,6 +166,7 @@ class DocumentBuilder {
 
   const std::string& text_;
   const std::string& file_;
+  const std::string& format_;  // the document describing the format, for messages
   std::size_t max_depth_;
   const char* const& read_to_;
   json root_;
@@ -174,9 +176,10 @@ class DocumentBuilder {
 
 }  // namespace
 
-nlohmann::ordered_json parse_json_document(const std::string& text, const std::string& file, std::size_t max_depth) {
+nlohmann::ordered_json parse_json_document(const std::string& text, const std::string& file, std::size_t max_depth,
+                                           const std::string& format) {
   const char* read_to = text.data();
-  DocumentBuilder builder(text, file, max_depth, read_to);
+  DocumentBuilder builder(text, file, max_depth, read_to, format);
   const TrackingIterator first(text.data(), &read_to), last(text.data() + text.size(), &read_to);
   json::sax_parse(first, last, &builder);  // errors throw from the builder
   return builder.take();

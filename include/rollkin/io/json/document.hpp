@@ -25,9 +25,11 @@ namespace rollkin::io {
 constexpr std::size_t kMaxJsonDepth = 256;
 
 /// Parses `text` (the content of `file`, named in messages). Rejects, as InputError: malformed JSON, a key
-/// repeated in one object, numbers outside the range of a double, nesting deeper than `max_depth`.
+/// repeated in one object, numbers outside the range of a double, nesting deeper than `max_depth`. The messages
+/// point to `format`, the document describing the file (a scene's, or docs/synthesis.md for a synthesis spec).
 nlohmann::ordered_json parse_json_document(const std::string& text, const std::string& file,
-                                           std::size_t max_depth = kMaxJsonDepth);
+                                           std::size_t max_depth = kMaxJsonDepth,
+                                           const std::string& format = "docs/scene_format.md");
 
 /// Replaces the value at `path` of `document` (a JSON path as the scene's messages write it, e.g.
 /// "links[1].contours[0].a": keys joined by '.', array indices in brackets) by `value`. Every step but the
