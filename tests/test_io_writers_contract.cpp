@@ -5,9 +5,9 @@
 // Writers, each with the reader the run itself uses:
 //   point files (io::point_file_text)                      -> io::parse_point_text: the same doubles, bit for bit;
 //   DXF SPLINEs (io::dxf_text of spline_of, polyline_spline) -> io::parse_dxf_contour: the same control points;
-//   synthesize cam's four files (synthesis::cam_files)     -> read_point_file, read_dxf_contour (layer CAM),
+//   synthesize cam's four files (output::cam_files)     -> read_point_file, read_dxf_contour (layer CAM),
 //                                                             read_svg_path ("cam"), io::load_scene;
-//   synthesize gears' four files (synthesis::gear_files)   -> read_point_file x 2, read_dxf_contour (GEAR1, GEAR2),
+//   synthesize gears' four files (output::gear_files)   -> read_point_file x 2, read_dxf_contour (GEAR1, GEAR2),
 //                                                             io::load_scene.
 // Inputs: sizes from 1e-300 to 1e300, far from the origin (1e12 + a unit circle), signed zeros, the smallest
 // normal numbers, 3 to 10^5 points; specs scaled by 1e-6 to 1e6 and specs of absurd sizes (1e300). For a spec a
@@ -27,7 +27,7 @@
 #include "rollkin/io/point_file.hpp"
 #include "rollkin/io/scene/reader.hpp"
 #include "rollkin/io/svg/reader.hpp"
-#include "rollkin/synthesis/synthesis_files.hpp"
+#include "rollkin/output/synthesis_files.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -147,7 +147,7 @@ std::string cam_round_trip(const std::string& spec_text, const fs::path& dir) {
     return std::string("refused: ") + e.what();
   }
   if (!profile.envelope.defects.empty()) return "refused: undercut";  // nothing is written
-  const synthesis::CamFiles files = synthesis::cam_files(spec, profile, "c.txt");
+  const output::CamFiles files = output::cam_files(spec, profile, "c.txt");
   testing::write_text(dir / "c.txt", files.profile);
   testing::write_text(dir / "c.dxf", files.dxf);
   testing::write_text(dir / "c.svg", files.svg);
@@ -214,7 +214,7 @@ std::string gear_round_trip(const std::string& spec_text, const fs::path& dir) {
   } catch (const io::InputError& e) {
     return std::string("refused: ") + e.what();
   }
-  const synthesis::GearFiles files = synthesis::gear_files(spec, design, "g.1.txt", "g.2.txt");
+  const output::GearFiles files = output::gear_files(spec, design, "g.1.txt", "g.2.txt");
   testing::write_text(dir / "g.1.txt", files.gear1);
   testing::write_text(dir / "g.2.txt", files.gear2);
   testing::write_text(dir / "g.dxf", files.dxf);
