@@ -147,7 +147,8 @@ py::object sweep_dict(const PyScene& s) {
   return std::move(d);
 }
 
-/// The chains of a contour file (io/contour_formats.hpp) as dicts with the fields of `rollkin contours --json`.
+/// The chains of a contour file (io/contour_formats.hpp) as dicts with the fields of `rollkin contours --json`
+/// (io::contours_json): None for what an unreadable entity lacks, "no_selector", "hidden" and "unreadable".
 py::list contours(const py::object& path) {
   const std::string file = path_argument(path, "path");
   const std::vector<rollkin::io::ListedChain> chains = interruptible<std::vector<rollkin::io::ListedChain>>(
@@ -159,12 +160,16 @@ py::list contours(const py::object& path) {
     py::list entities;
     for (const std::string& e : c.entities) entities.append(text_of(e));
     d["entities"] = entities;
-    d["closed"] = c.closed;
-    d["length"] = c.length;
-    d["min"] = py::make_tuple(c.min.x(), c.min.y());
-    d["max"] = py::make_tuple(c.max.x(), c.max.y());
-    d["corners"] = c.corners;
-    d["selector"] = to_python(json::parse(c.selector));
+    const bool chain = c.unreadable.empty();
+    d["closed"] = chain ? py::object(py::bool_(c.closed)) : py::none();
+    d["length"] = chain ? py::object(py::float_(c.length)) : py::none();
+    d["min"] = chain ? py::object(py::make_tuple(c.min.x(), c.min.y())) : py::none();
+    d["max"] = chain ? py::object(py::make_tuple(c.max.x(), c.max.y())) : py::none();
+    d["corners"] = chain ? py::object(py::int_(c.corners)) : py::none();
+    d["selector"] = c.selector.empty() ? py::none() : to_python(json::parse(c.selector));
+    if (c.selector.empty()) d["no_selector"] = text_of(c.no_selector);
+    if (!c.hidden.empty()) d["hidden"] = text_of(c.hidden);
+    if (!chain) d["unreadable"] = text_of(c.unreadable);
     out.append(d);
   }
   return out;

@@ -11,6 +11,7 @@
 #include "bezier_distance.hpp"
 #include "test_support.hpp"
 
+#include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/dxf/reader.hpp"
 
 #include <cmath>
@@ -318,11 +319,54 @@ BOOST_AUTO_TEST_CASE(bulge_arcs_of_one_circle_are_one_arc) {
               points.size() - 1, c.segments.size(), vertices, circle);
   BOOST_TEST(vertices < 1e-12);
   BOOST_TEST(circle < 1e-12);
-  // An S (the second arc turns the other way) and two tangent arcs of different radii (quarter arcs of radius
-  // 1 and 2) keep their pieces.
+}
+
+/// The largest distance of the contour's points (2000 per segment) from the circle (centre, radius) of the
+/// segment's own arc, relative to the radius; segments i of the contour belong to circle circle_of[i].
+double off_circles(const DxfContour& c, const std::vector<std::pair<V, double>>& circles, const std::vector<std::size_t>& circle_of) {
+  const BezierPath<double> path(c.segments, false);
+  double worst = 0;
+  for (std::size_t i = 0; i < c.segments.size(); ++i)
+    for (int k = 0; k <= 2000; ++k) {
+      const auto& [centre, r] = circles[circle_of[i]];
+      worst = std::max(worst, std::abs((path.jet(double(i) + k / 2000.0, 0).p - centre).norm() - r) / r);
+    }
+  return worst;
+}
+
+// Tangent bulge arcs of different circles stay apart (docs/reliability.md, "CAD readers (issue 37)": arcs are
+// joined only when they are one circle, centre and radius). The LWPOLYLINE through (1, 0), (0, 1), (-2, -1) with
+// both bulges tan(22.5 deg) is a quarter circle of radius 1 about (0, 0) and a quarter circle of radius 2 about
+// (0, -1), length 3 pi / 2 (read as one half circle of radius 1.581 before: its common vertex lies on that
+// circle, as that of every tangent pair does). Likewise an S of equal radii, and radii 1e-6 apart.
+BOOST_AUTO_TEST_CASE(tangent_bulge_arcs_of_different_circles_stay_apart) {
   const double q = std::tan(M_PI / 8);
-  BOOST_TEST(rollkin::io::parse_dxf_contour(polyline_text({V(0, 0), V(1, 1), V(2, 2)}, {q, -q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
-  BOOST_TEST(rollkin::io::parse_dxf_contour(polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0}), DxfSelection{"L", ""}).segments.size() == 2u);
+  const DxfContour two = rollkin::io::parse_dxf_contour(polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0}), DxfSelection{"L", ""});
+  const BezierPath<double> path(two.segments, false);
+  BOOST_TEST(std::abs(path.total_length() - 1.5 * M_PI) < 1e-13);
+  BOOST_TEST(two.segments.size() == 2u);
+  BOOST_TEST(off_circles(two, {{V(0, 0), 1.0}, {V(0, -1), 2.0}}, {0, 1}) < 1e-14);
+  // the listing says the same: length 3 pi / 2, box (-2, -1) to (1, 1)
+  const std::filesystem::path file = rollkin::testing::scratch_dir("io_dxf_tangent_arcs") / "two_arcs.dxf";
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file) << polyline_text({V(1, 0), V(0, 1), V(-2, -1)}, {q, q, 0});
+  const std::vector<rollkin::io::ListedChain> listed = rollkin::io::list_dxf_contours(file.string());
+  BOOST_TEST_REQUIRE(listed.size() == 1u);
+  BOOST_TEST(std::abs(listed[0].length - 1.5 * M_PI) < 1e-12);
+  BOOST_TEST((listed[0].min - V(-2, -1)).norm() < 1e-12);
+  BOOST_TEST((listed[0].max - V(1, 1)).norm() < 1e-12);
+  // an S: quarter arcs of radius 1 about (0, 1) and (2, 1), one counter-clockwise, one clockwise
+  const DxfContour s = rollkin::io::parse_dxf_contour(polyline_text({V(0, 0), V(1, 1), V(2, 2)}, {q, -q, 0}), DxfSelection{"L", ""});
+  BOOST_TEST(std::abs(BezierPath<double>(s.segments, false).total_length() - M_PI) < 1e-13);
+  BOOST_TEST(off_circles(s, {{V(0, 1), 1.0}, {V(2, 1), 1.0}}, {0, 1}) < 1e-14);
+  // radii 1 and 1 + 1e-6, tangent at (0, 1), 60 degrees each, counter-clockwise: two circles
+  const double r2 = 1 + 1e-6, t = M_PI / 3;
+  const V c2(0, 1 - r2), end = c2 + r2 * V(std::cos(M_PI / 2 + t), std::sin(M_PI / 2 + t));
+  const V start(std::cos(M_PI / 2 - t), std::sin(M_PI / 2 - t));
+  const double k = std::tan(t / 4);
+  const DxfContour near = rollkin::io::parse_dxf_contour(polyline_text({start, V(0, 1), end}, {k, k, 0}), DxfSelection{"L", ""});
+  BOOST_TEST(off_circles(near, {{V(0, 0), 1.0}, {c2, r2}}, {0, 1}) < 1e-14);
+  BOOST_TEST(std::abs(BezierPath<double>(near.segments, false).total_length() - t * (1 + r2)) < 1e-13);
 }
 
 // A bulge so large that the arc's ends are closer than the join tolerance of its own diameter cannot be told
@@ -472,17 +516,32 @@ BOOST_AUTO_TEST_CASE(bad_geometry_is_refused_naming_the_entity) {
   BOOST_TEST(contains(dxf_error(minimal_dxf(zero_line), "L"), "LINE 6F has zero length"));
 }
 
-// A handle names one entity: two entities with the same handle (here 2A on layers A and B, and one written in
-// lower case) are an error naming both with their lines, whichever way the contour is selected.
-BOOST_AUTO_TEST_CASE(duplicate_handles_are_an_error_naming_both_entities) {
+// A handle names one entity: a selection by a handle two entities share (here 2A on layers A and B, one written
+// in lower case) is an error naming the handle and both entities with their lines and layers, whether it is
+// selected alone or in a list; every other selection of the drawing is read (docs/reliability.md, "CAD
+// readers (issue 37)"): a unique handle, a layer, a point near, and the listing.
+BOOST_AUTO_TEST_CASE(a_shared_handle_refuses_only_the_selections_that_use_it) {
   const std::string first = "0\nLINE\n5\n2A\n8\nA\n10\n0\n20\n0\n11\n1\n21\n0\n";
   const std::string second = "0\nLINE\n5\n2a\n8\nB\n10\n1\n20\n0\n11\n2\n21\n0\n";
-  const std::string text = minimal_dxf(first + second);
-  for (const DxfSelection& sel : {DxfSelection{"", "2A"}, DxfSelection{"A", ""}, DxfSelection{"B", ""}}) {
+  const std::string third = "0\nLINE\n5\n2C\n8\nC\n10\n5\n20\n5\n11\n6\n21\n5\n";
+  const std::string text = minimal_dxf(first + second + third);
+  DxfSelection list;
+  list.handles = {"2C", "2a"};
+  for (const DxfSelection& sel : {DxfSelection{"", "2A"}, DxfSelection{"", "2a"}, list}) {
     const std::string m = input_error_of([&] { rollkin::io::parse_dxf_contour(text, sel, "dup.dxf"); });
-    BOOST_TEST(contains(m, "dup.dxf:line 19"));
-    BOOST_TEST(contains(m, "LINE 2A (line 5, layer \"A\") and LINE 2a (line 19, layer \"B\") have the same handle 2a"));
+    BOOST_TEST(contains(m, "dup.dxf:handle 2"));
+    BOOST_TEST(contains(m, "is ambiguous: LINE 2A (line 5, layer \"A\") and LINE 2a (line 19, layer \"B\") have it"));
   }
+  // the unique handle, each layer and a point near: read, each its own entity
+  const DxfContour unique = rollkin::io::parse_dxf_contour(text, DxfSelection{"", "2C"});
+  BOOST_TEST(unique.entities == std::vector<std::string>{"LINE 2C"});
+  BOOST_TEST((unique.segments.front().points.front() - V(5, 5)).norm() == 0);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(text, DxfSelection{"A", ""}).segments.front().points.back().x() == 1);
+  BOOST_TEST(rollkin::io::parse_dxf_contour(text, DxfSelection{"B", ""}).segments.front().points.back().x() == 2);
+  DxfSelection near;
+  near.near = V(1.9, 0.1);
+  // (near on all layers: the two LINEs sharing the handle meet at (1, 0), one chain)
+  BOOST_TEST(rollkin::io::parse_dxf_contour(text, near).entities == (std::vector<std::string>{"LINE 2A", "LINE 2a"}));
   // Distinct handles on the same two entities chain as before.
   const std::string distinct = minimal_dxf(first + "0\nLINE\n5\n2B\n8\nA\n10\n1\n20\n0\n11\n2\n21\n0\n");
   BOOST_TEST(rollkin::io::parse_dxf_contour(distinct, DxfSelection{"A", ""}).segments.size() == 2u);

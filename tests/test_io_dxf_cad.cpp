@@ -264,14 +264,21 @@ BOOST_AUTO_TEST_CASE(listed_chains_are_selected_by_their_selectors) {
   std::filesystem::create_directories(dir);
   ezdxf_cases(dir.string());
   std::map<std::string, int> per_layer;
-  std::size_t selectable = 0, near_selectors = 0, handle_selectors = 0;
+  std::size_t selectable = 0, near_selectors = 0, handle_selectors = 0, unreadable = 0;
   for (const std::string name : {"layers.dxf", "blocks.dxf", "tilt.dxf"}) {
     const std::string file = (dir / name).string();
     for (const rollkin::io::ListedChain& l : rollkin::io::list_dxf_contours(file)) {
       ++per_layer[name + " " + l.group];
       BOOST_TEST_CONTEXT(name << " " << l.group << " " << (l.entities.empty() ? std::string() : l.entities.front())) {
         BOOST_TEST(!l.entities.empty());
-        if (l.selector.empty()) continue;
+        if (!l.unreadable.empty()) {
+          ++unreadable;
+          BOOST_TEST(l.segments.empty());
+        }
+        if (l.selector.empty()) {  // every chain no selector picks says why
+          BOOST_TEST(!l.no_selector.empty());
+          continue;
+        }
         ++selectable;
         const nlohmann::json j = nlohmann::json::parse(l.selector);
         BOOST_TEST(j.at("type") == "dxf");
@@ -295,6 +302,7 @@ BOOST_AUTO_TEST_CASE(listed_chains_are_selected_by_their_selectors) {
   BOOST_TEST(near_selectors == 11u);              // 5 on layer 0, 6 on GRID
   BOOST_TEST(handle_selectors == 1u);             // the LINE beside the unreadable tilted ARC
   BOOST_TEST(per_layer["tilt.dxf TILT"] == 2);    // the LINE, and the tilted ARC listed with why
+  BOOST_TEST(unreadable == 7u);  // no chain: the self-inserting block and the 6 tilted entities of tilt.dxf
   std::printf("listing: %zu selectable chains (%zu by near, %zu by handles)\n", selectable, near_selectors, handle_selectors);
   // the CIRCLE (extrusion -Z, radius 15 around (100, -80)): its length and box
   for (const rollkin::io::ListedChain& l : rollkin::io::list_dxf_contours((dir / "layers.dxf").string()))

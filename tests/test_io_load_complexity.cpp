@@ -2,12 +2,15 @@
 // read in time linear in their size"): a scene whose input is 4n long loads in at most 5 times the time of
 // one n long, for every reader: point files, SVG path data (smooth and all corners), SVG nested groups, DXF
 // LWPOLYLINE, SPLINE and chains of LINE entities, inline NURBS, the scene's JSON itself (links and pairs), and
-// the synthesis specs' law tables, segment lists and gear tables (with the law's continuity check).
+// the synthesis specs' law tables, segment lists and gear tables (with the law's continuity check); likewise
+// the listing of a drawing's contours (io/contour_listing.hpp): a DXF MINSERT array of copies, a MINSERT column
+// (every end at one x), an SVG document of many shapes.
 // Before, a 16,000-point NURBS or DXF SPLINE took 11.6 CPU s (knot insertion over the whole control polygon
 // for every knot, multiplicities counted over the whole knot vector), an SVG element under 10^5 nested groups
 // 26 CPU s (a location text, counting lines from the file's start, built for every ancestor), and a scene of
 // 10^4 four-bar loops 6.8 s (links and pairs looked up by name in lists, the spanning tree scanning every
-// pair for every link): 16 times the cost for 4 times the input.
+// pair for every link): 16 times the cost for 4 times the input. `rollkin contours` on a 1 kB DXF with a
+// 300 x 300 MINSERT took 26 s (every chain's "near" point checked against every other chain).
 //
 // The cost is the thread's CPU time, the least of seven loads, the small and the large input in turn (other
 // processes only ever add to it), and only a ratio within one run is asserted, never a time. A linear load
@@ -20,6 +23,7 @@
 #include "test_support.hpp"
 
 #include "rollkin/io/json/document.hpp"
+#include "rollkin/io/contour_listing.hpp"
 #include "rollkin/io/scene/reader.hpp"
 #include "rollkin/synthesis/cam.hpp"
 #include "rollkin/synthesis/gears.hpp"
@@ -48,9 +52,8 @@ using Loader = std::function<void(const std::string& text, const std::string& fi
 
 void load_scene(const std::string& text, const std::string& file) { rollkin::io::parse_scene(text, file); }
 
-/// The least CPU time of `loads` loads of each scene text, loaded in turn: {small, large}.
-std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const fs::path& scene_file, int loads,
-                                 const Loader& load) {
+/// The least CPU time of `loads` calls of load(0) (the small input) and load(1) (the large), in turn.
+std::array<double, 2> load_costs(const std::function<void(std::size_t)>& load, int loads) {
   // Memory freed by one load stays in the heap for the next (no trimming, no mmap per large block): the
   // kernel's page faults on fresh memory are not counted in each load again.
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
@@ -59,7 +62,7 @@ std::array<double, 2> load_costs(const std::array<std::string, 2>& scenes, const
   for (int k = 0; k < loads; ++k)
     for (std::size_t which = 0; which < 2; ++which) {
       const double t0 = thread_cpu_seconds();
-      load(scenes[which], scene_file.string());
+      load(which);
       best[which] = std::min(best[which], thread_cpu_seconds() - t0);
     }
   return best;
@@ -78,21 +81,36 @@ std::string number(double x) {
   return buf;
 }
 
-/// Loads the scenes made by make(n) and make(4 n) and checks the cost ratio (see the comment at the top).
-void check_linear(const std::string& what, std::size_t n, const std::function<std::string(std::size_t)>& make,
-                  const Loader& load = load_scene) {
+/// Checks the cost ratio of load(1) (an input 4 times as large) to load(0) (see the comment at the top).
+void check_ratio(const std::string& what, std::size_t n, const std::function<void(std::size_t)>& load) {
   const double bound = 5;
-  const fs::path scene_file = rollkin::testing::scratch_dir("io_load_complexity") / "scene.json";
-  const std::array<std::string, 2> scenes{make(n), make(4 * n)};
   double ratio = INFINITY;
   std::array<double, 2> least{};
   for (int attempt = 0; attempt < 3 && ratio > bound; ++attempt) {
-    const std::array<double, 2> t = load_costs(scenes, scene_file, 7, load);
+    const std::array<double, 2> t = load_costs(load, 7);
     if (t[1] / t[0] < ratio) ratio = t[1] / t[0], least = t;
   }
   BOOST_TEST_MESSAGE(what << ": n = " << n << " loads in " << least[0] << " s, 4n in " << least[1] << " s: ratio " << ratio);
   BOOST_TEST(ratio <= bound, what << ": 4 times the input costs " << ratio << " times the CPU time (n = " << n << ": "
                                   << least[0] << " s, 4n: " << least[1] << " s); at most " << bound << " expected");
+}
+
+/// Loads the inputs made by make(n) and make(4 n) (a scene, unless `load` reads them otherwise) and checks the
+/// cost ratio.
+void check_linear(const std::string& what, std::size_t n, const std::function<std::string(std::size_t)>& make,
+                  const Loader& load = load_scene) {
+  const fs::path scene_file = rollkin::testing::scratch_dir("io_load_complexity") / "scene.json";
+  const std::array<std::string, 2> scenes{make(n), make(4 * n)};
+  check_ratio(what, n, [&](std::size_t which) { load(scenes[which], scene_file.string()); });
+}
+
+/// Lists the contours of the drawings made by make(n) and make(4 n) (files) and checks the cost ratio; each
+/// listing must hold at least n (4 n) chains.
+void check_listing_linear(const std::string& what, std::size_t n, const std::function<fs::path(std::size_t)>& make) {
+  const std::array<fs::path, 2> files{make(n), make(4 * n)};
+  for (std::size_t which = 0; which < 2; ++which)
+    BOOST_TEST(rollkin::io::list_contours(files[which].string()).size() >= (which ? 4 * n : n));
+  check_ratio(what, n, [&](std::size_t which) { rollkin::io::list_contours(files[which].string()); });
 }
 
 /// n control points on a spiral, as a list of [x, y] (JSON) or the DXF groups 10/20/30.
@@ -275,6 +293,40 @@ std::string gear_table(std::size_t n) {
 void load_gear_spec(const std::string& text, const std::string& file) {
   rollkin::synthesis::gear_spec_from_document(rollkin::io::parse_json_document(text, file), file,
                                               fs::path(file).parent_path().string());
+
+/// A DXF drawing of one MINSERT of a block holding one LINE of length 0.5, in `columns` x `rows` copies spaced
+/// 1 apart: as many chains on layer CAM.
+fs::path dxf_minsert(const std::string& name, std::size_t columns, std::size_t rows) {
+  const fs::path file = rollkin::testing::scratch_dir("io_load_complexity") / name;
+  std::ostringstream d;
+  d << "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nTICK\n70\n0\n10\n0\n20\n0\n"
+    << "0\nLINE\n5\n20\n8\n0\n10\n0\n20\n0\n11\n0.25\n21\n0.5\n0\nENDBLK\n8\n0\n0\nENDSEC\n"
+    << "0\nSECTION\n2\nENTITIES\n0\nINSERT\n5\n30\n8\nCAM\n2\nTICK\n10\n0\n20\n0\n70\n" << columns << "\n71\n" << rows
+    << "\n44\n1\n45\n1\n0\nENDSEC\n0\nEOF\n";
+  rollkin::testing::write_text(file, d.str());
+  return file;
+}
+
+/// A MINSERT grid of about n copies (a square of side sqrt(n)).
+fs::path dxf_minsert_grid(std::size_t n) {
+  const auto side = static_cast<std::size_t>(std::lround(std::sqrt(static_cast<double>(n))));
+  return dxf_minsert("minsert_grid_" + std::to_string(n) + ".dxf", side, side);
+}
+
+/// A MINSERT column of n copies: every LINE end at x = 0 or 0.25 (ends compared by x alone: quadratic).
+fs::path dxf_minsert_column(std::size_t n) { return dxf_minsert("minsert_column_" + std::to_string(n) + ".dxf", 1, n); }
+
+/// An SVG document of n small closed paths (triangles) in a grid, without ids: each listed with "near".
+fs::path svg_many_shapes(std::size_t n) {
+  const fs::path file = rollkin::testing::scratch_dir("io_load_complexity") / ("shapes_" + std::to_string(n) + ".svg");
+  const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\">\n";
+  for (std::size_t i = 0; i < n; ++i)
+    svg << "<path d=\"M " << 2 * (i % side) << " " << 2 * (i / side) << " l 1 0 l 0 1 z\"/>\n";
+  svg << "</svg>\n";
+  rollkin::testing::write_text(file, svg.str());
+  return file;
 }
 
 }  // namespace
@@ -285,6 +337,18 @@ BOOST_AUTO_TEST_CASE(synthesis_tables_and_segment_lists_load_in_linear_time) {
   check_linear("law table", 20000, law_table, load_cam_spec);
   check_linear("law segments", 5000, law_segments, load_cam_spec);
   check_linear("gear table", 20000, gear_table, load_gear_spec);
+}
+
+BOOST_AUTO_TEST_CASE(the_listing_of_a_minsert_grid_is_n_log_n) {
+  check_listing_linear("DXF MINSERT grid listing", 2500, dxf_minsert_grid);
+}
+
+BOOST_AUTO_TEST_CASE(the_listing_of_a_minsert_column_is_n_log_n) {
+  check_listing_linear("DXF MINSERT column listing", 2500, dxf_minsert_column);
+}
+
+BOOST_AUTO_TEST_CASE(the_listing_of_an_svg_document_of_many_shapes_is_n_log_n) {
+  check_listing_linear("SVG listing", 1000, svg_many_shapes);
 }
 
 BOOST_AUTO_TEST_CASE(an_inline_nurbs_loads_in_linear_time) { check_linear("inline NURBS", 4000, inline_nurbs); }

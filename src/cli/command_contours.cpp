@@ -34,12 +34,15 @@ Command contours_command(CLI::App& rollkin) {
   // The formats and what is listed of each come from the table of contour file formats (io/contour_formats.hpp).
   app->footer(
       "Lists every chain of the file, by its format (the extension, case ignored):\n" + io::contour_file_formats_help() +
-      "Per chain: its group (layer, element or file), entities, closed or open, length, bounding box and corners\n"
-      "in the file's units (SVG: viewport units, y up, as a scene without units.length reads them), and the contour\n"
-      "object that selects exactly it: paste it into a scene's \"contours\" with a \"name\" (its \"file\" is the\n"
-      "path given here: make it relative to the scene's directory). README.md, \"rollkin contours\".\n"
-      "Exit status: 0 listed; 2 bad input (a file that cannot be read: the message names the file, the element,\n"
-      "entity or line and what to change) or command line, nothing written; 3 out of memory.");
+      "An SVG element hidden by display=\"none\" or visibility=\"hidden\" is marked hidden: \"near\" and \"subpath\"\n"
+      "pass it over, only its own id selects it. Per chain: its group (layer, element or file), entities, closed or\n"
+      "open, length, bounding box and corners in the file's units (SVG: viewport units, y up, as a scene without\n"
+      "units.length reads them), and the contour object that selects exactly it: paste it into a scene's\n"
+      "\"contours\" with a \"name\" (its \"file\" is the path given here: make it relative to the scene's\n"
+      "directory); a chain no selector picks says why. An entity or element that cannot be read is listed as\n"
+      "unreadable with its message (no length, no box).\n"
+      "Exit status: 0 listed; 2 bad input (a file that cannot be read, or one with unreadable entities: listed,\n"
+      "then named on stderr; --draw not written) or command line, nothing written; 3 out of memory.");
   return {app, [o] { return run_contours(*o); }};
 }
 
@@ -50,17 +53,17 @@ std::string box_text(const io::ListedChain& c) {
          io::format_number(c.max.y(), 10) + ")";
 }
 
-nlohmann::ordered_json chain_json(const io::ListedChain& c) {
-  nlohmann::ordered_json j;
-  j["group"] = c.group;
-  j["entities"] = c.entities;
-  j["closed"] = c.closed;
-  j["length"] = c.length;
-  j["min"] = {c.min.x(), c.min.y()};
-  j["max"] = {c.max.x(), c.max.y()};
-  j["corners"] = c.corners;
-  j["selector"] = nlohmann::ordered_json::parse(c.selector);
-  return j;
+/// One listed chain as text: "k. group: entities; closed, length, box, corners" and its selector (or why
+/// there is none); an unreadable entity with its message.
+std::string chain_text(std::size_t k, const io::ListedChain& c) {
+  std::string entities;
+  for (const auto& e : c.entities) entities += (entities.empty() ? "" : ", ") + e;
+  const std::string number = std::to_string(k + 1) + ". " + c.group + ": ";
+  if (!c.unreadable.empty()) return number + "unreadable: " + c.unreadable + "\n";
+  return number + entities + "; " + (c.closed ? "closed" : "open") + ", length " + io::format_number(c.length, 10) +
+         ", box " + box_text(c) + ", " + std::to_string(c.corners) + " corner(s)" +
+         (c.hidden.empty() ? "" : ", hidden: " + c.hidden) + "\n   " +
+         (c.selector.empty() ? "(no selector: " + c.no_selector + ")" : c.selector) + "\n";
 }
 
 int run_contours(const ContoursOptions& o) {
@@ -69,19 +72,17 @@ int run_contours(const ContoursOptions& o) {
   g_doing = "reading the drawing";
   const std::vector<io::ListedChain> chains = io::list_contours(o.file);
   if (o.json) {
-    nlohmann::ordered_json all = nlohmann::ordered_json::array();
-    for (const auto& c : chains) all.push_back(chain_json(c));
-    std::cout << all.dump(2) << "\n";
+    std::cout << io::contours_json(chains) << "\n";
   } else {
     std::cout << o.file << ": " << chains.size() << " chain(s)\n";
-    for (std::size_t k = 0; k < chains.size(); ++k) {
-      const io::ListedChain& c = chains[k];
-      std::string entities;
-      for (const auto& e : c.entities) entities += (entities.empty() ? "" : ", ") + e;
-      std::cout << k + 1 << ". " << c.group << ": " << entities << "; " << (c.closed ? "closed" : "open") << ", length "
-                << io::format_number(c.length, 10) << ", box " << box_text(c) << ", " << c.corners << " corner(s)\n   "
-                << c.selector << "\n";
-    }
+    for (std::size_t k = 0; k < chains.size(); ++k) std::cout << chain_text(k, chains[k]);
+  }
+  if (const std::size_t bad = io::unreadable_count(chains)) {
+    std::cerr << "rollkin contours: " << o.file << ": " << bad << (bad == 1 ? " entity or element" : " entities or elements")
+              << " could not be read (listed above as unreadable, each with its message); the other chains are listed";
+    if (!o.draw.empty()) std::cerr << "; " << o.draw << " not written";
+    std::cerr << "\n";
+    return 2;
   }
   if (!o.draw.empty()) {
     outputs.set(draw, output::contour_listing_svg(o.file, chains));

@@ -1,7 +1,11 @@
 // Points, distances and bounding boxes of rational Bezier segments (segment_geometry.hpp).
 #include "segment_geometry.hpp"
 
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -36,16 +40,34 @@ double hull_distance(const BezierSegment<double>& s, const V& q) {
 
 }  // namespace
 
-V segment_point(const BezierSegment<double>& s, double t) {
-  std::vector<V> p(s.points.size());
-  std::vector<double> w(s.points.size());
-  for (std::size_t i = 0; i < p.size(); ++i) w[i] = s.weight(i), p[i] = s.points[i] * w[i];
-  for (std::size_t r = 1; r < p.size(); ++r)
-    for (std::size_t i = 0; i + r < p.size(); ++i) {
+namespace {
+
+/// de Casteljau on n homogeneous points in p and w (overwritten).
+V de_casteljau(V* p, double* w, std::size_t n, double t) {
+  for (std::size_t r = 1; r < n; ++r)
+    for (std::size_t i = 0; i + r < n; ++i) {
       p[i] = (1 - t) * p[i] + t * p[i + 1];
       w[i] = (1 - t) * w[i] + t * w[i + 1];
     }
   return p[0] / w[0];
+}
+
+}  // namespace
+
+V segment_point(const BezierSegment<double>& s, double t) {
+  // On the stack up to degree 7 (lines, arcs, cubics: every call of a listing), else on the heap: the heap's
+  // allocations were half of the time of listing a drawing.
+  constexpr std::size_t kStack = 8;
+  const std::size_t n = s.points.size();
+  std::array<V, kStack> ps;
+  std::array<double, kStack> ws;
+  std::vector<V> ph;
+  std::vector<double> wh;
+  if (n > kStack) ph.resize(n), wh.resize(n);
+  V* p = n > kStack ? ph.data() : ps.data();
+  double* w = n > kStack ? wh.data() : ws.data();
+  for (std::size_t i = 0; i < n; ++i) w[i] = s.weight(i), p[i] = s.points[i] * w[i];
+  return de_casteljau(p, w, n, t);
 }
 
 double distance_to_segment(const BezierSegment<double>& s, const V& q) {
@@ -84,6 +106,57 @@ void segments_box(const std::vector<BezierSegment<double>>& segments, V& lo, V& 
       hi[axis] = std::max(hi[axis], largest([&](double t) { return segment_point(s, t)[axis]; }, 32));
       lo[axis] = std::min(lo[axis], -largest([&](double t) { return -segment_point(s, t)[axis]; }, 32));
     }
+}
+
+std::vector<V> near_candidates(const std::vector<BezierSegment<double>>& segments) {
+  std::vector<V> at{segment_point(segments[segments.size() / 2], 0.5)};
+  const std::size_t count = std::min<std::size_t>(64, 4 * segments.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    const double u = (k + 0.5) * static_cast<double>(segments.size()) / static_cast<double>(count);
+    const std::size_t i = std::min(segments.size() - 1, static_cast<std::size_t>(u));
+    at.push_back(segment_point(segments[i], u - static_cast<double>(i)));
+  }
+  return at;
+}
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using GeoPoint = bg::model::point<double, 2, bg::cs::cartesian>;
+using GeoBox = bg::model::box<GeoPoint>;
+using Entry = std::pair<GeoBox, std::size_t>;  // a segment's control-point box, its index in Tree::segments
+
+struct SegmentIndex::Tree {
+  std::vector<std::pair<const BezierSegment<double>*, std::size_t>> segments;
+  bgi::rtree<Entry, bgi::rstar<16>> boxes;
+};
+
+namespace {
+
+std::vector<Entry> entries_of(const std::vector<std::pair<const BezierSegment<double>*, std::size_t>>& segments) {
+  std::vector<Entry> out;
+  out.reserve(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    V lo = segments[i].first->points.front(), hi = lo;
+    for (const V& p : segments[i].first->points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    out.emplace_back(GeoBox(GeoPoint(lo.x(), lo.y()), GeoPoint(hi.x(), hi.y())), i);
+  }
+  return out;
+}
+
+}  // namespace
+
+SegmentIndex::SegmentIndex(const std::vector<std::pair<const BezierSegment<double>*, std::size_t>>& segments)
+    : tree_(new Tree{segments, bgi::rtree<Entry, bgi::rstar<16>>(entries_of(segments))}) {}  // packed (bulk) load
+
+SegmentIndex::~SegmentIndex() = default;
+
+bool SegmentIndex::other_within(const V& q, double d, std::size_t owner) const {
+  const GeoBox around(GeoPoint(q.x() - d, q.y() - d), GeoPoint(q.x() + d, q.y() + d));
+  for (auto it = tree_->boxes.qbegin(bgi::intersects(around)); it != tree_->boxes.qend(); ++it) {
+    const auto& [segment, its_owner] = tree_->segments[it->second];
+    if (its_owner != owner && hull_distance(*segment, q) <= d && distance_to_segment(*segment, q) <= d) return true;
+  }
+  return false;
 }
 
 }  // namespace rollkin::io

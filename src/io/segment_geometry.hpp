@@ -5,6 +5,9 @@
 
 #include "rollkin/profile/bezier.hpp"
 
+#include <cstddef>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace rollkin::io {
@@ -23,5 +26,30 @@ double distance_to_segments(const std::vector<BezierSegment<double>>& segments, 
 /// The bounding box of the segments' curves: per segment and coordinate, the extreme of 32 samples refined by
 /// a golden-section search between its neighbours (the curve's extremes, to round-off).
 void segments_box(const std::vector<BezierSegment<double>>& segments, Vec2<double>& lo, Vec2<double>& hi);
+
+/// Points on end-to-end segments that "near" may name them by (the listings of DXF and SVG drawings): the
+/// middle of the middle segment first, then up to 64 more spread along them (where other chains cross the
+/// middle, another point names it). At most 65 points, whatever the number of segments.
+std::vector<Vec2<double>> near_candidates(const std::vector<BezierSegment<double>>& segments);
+
+/// The segments of many owners (the chains of a layer, the shapes of a document) in an R-tree of their
+/// control-point boxes (Boost.Geometry, bulk-loaded: n log n), so that "does another owner pass within d of
+/// q" costs log n plus the segments whose boxes are that near, not a loop over every owner: the listing of a
+/// drawing stays n log n in its chains (docs/reliability.md, "CAD readers (issue 37)").
+class SegmentIndex {
+ public:
+  /// The segments (kept by address: they must outlive the index) with the owner each belongs to.
+  explicit SegmentIndex(const std::vector<std::pair<const BezierSegment<double>*, std::size_t>>& segments);
+  ~SegmentIndex();
+  SegmentIndex(const SegmentIndex&) = delete;
+  SegmentIndex& operator=(const SegmentIndex&) = delete;
+
+  /// Whether a segment of an owner other than `owner` passes within `d` of q (distance_to_segment).
+  bool other_within(const Vec2<double>& q, double d, std::size_t owner) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
 
 }  // namespace rollkin::io

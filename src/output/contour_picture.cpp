@@ -12,6 +12,7 @@ std::string contour_listing_svg(const std::string& file, const std::vector<io::L
   d.set_title(base_name(file) + ": " + std::to_string(chains.size()) + " chain(s)");
   for (std::size_t k = 0; k < chains.size(); ++k) {
     const io::ListedChain& c = chains[k];
+    if (c.segments.empty()) continue;  // an unreadable entity: nothing to draw
     std::vector<Eigen::Vector2d> points;
     for (const auto& s : c.segments) {
       BezierPath<double> piece({s}, false);

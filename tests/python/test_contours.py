@@ -91,3 +91,41 @@ def test_contours_errors(tmp_path):
                                         '<use id="b" href="#a"/></svg>')
     with pytest.raises(rollkin.InputError, match="is part of a <use> cycle"):
         rollkin.contours(tmp_path / "cycle.svg")
+
+
+def dxf(*entities):
+    """A DXF text of the ENTITIES given as (type, handle, layer, {group: value})."""
+    lines = ["0", "SECTION", "2", "ENTITIES"]
+    for kind, handle, layer, groups in entities:
+        lines += ["0", kind, "5", handle, "8", layer]
+        for code, value in groups.items():
+            lines += [str(code), str(value)]
+    return "\n".join(lines + ["0", "ENDSEC", "0", "EOF", ""])
+
+
+def test_chains_without_a_selector_and_unreadable_entities(tmp_path):
+    """A branch (no selector: None, with the reason), an unreadable entity (its message, no length or box) and a
+    hidden SVG element without an id, in a valid drawing: listed, as `rollkin contours --json` lists them."""
+    drawing = tmp_path / "parts.dxf"
+    line = lambda h, layer, a, b: ("LINE", h, layer, {10: a[0], 20: a[1], 11: b[0], 21: b[1]})
+    drawing.write_text(dxf(line("2A", "OK", (0, 0), (1, 0)),
+                           ("ELLIPSE", "2B", "BAD", {10: 0, 20: 0, 11: 0, 21: 0, 40: 0.5, 41: 0, 42: 1}),
+                           line("2C", "Y", (0, 5), (1, 5)), line("2D", "Y", (1, 5), (2, 5)), line("2E", "Y", (1, 5), (1, 6))))
+    chains = rollkin.contours(drawing)
+    assert [c["group"] for c in chains] == ["OK", "BAD", "Y"]
+    assert chains[0]["selector"] == {"type": "dxf", "file": "parts.dxf", "layer": "OK"} and "no_selector" not in chains[0]
+    assert chains[1]["selector"] is None and chains[1]["length"] is None and chains[1]["min"] is None
+    assert "ELLIPSE 2B has a zero major axis" in chains[1]["unreadable"]
+    assert chains[2]["selector"] is None and "3 entity ends meet at (1, 5)" in chains[2]["no_selector"]
+    assert chains[2]["length"] == pytest.approx(3, rel=1e-12)
+    assert chains[2]["min"] == pytest.approx((0, 5), abs=1e-12) and chains[2]["max"] == pytest.approx((2, 6), abs=1e-12)
+    listed = json.loads(subprocess.run([CLI, "contours", str(drawing), "--json"], capture_output=True, text=True).stdout)
+    for mine, cli in zip(chains, listed):
+        assert {k: (list(v) if isinstance(v, tuple) else v) for k, v in mine.items()} == cli
+    svg = tmp_path / "hidden.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 h 1 v 1 z"/>'
+                   '<path style="display:none" d="M 2 0 h 1 v 1 z"/></svg>')
+    shown, hidden = rollkin.contours(svg)
+    assert "hidden" not in shown and "near" in shown["selector"]
+    assert hidden["hidden"] == 'style="display:none" on line 1, <path>' and hidden["selector"] is None
+    assert "give it an id" in hidden["no_selector"]

@@ -37,17 +37,44 @@ struct UnionFind {
 };
 
 /// Node of every piece end (end 2 k is piece k's start, 2 k + 1 its end): ends within `tol` are one node.
+/// The ends are put in square cells of side `tol` (a hash map): two ends within `tol` lie in the same or
+/// neighbouring cells, so each end is compared with the ends of nine cells, not with every end of the same x
+/// (a MINSERT column, a stack of copies: quadratic). Ends at the same point are joined once, by sorting.
 std::vector<std::size_t> end_nodes(const std::vector<Piece>& pieces, double tol) {
   const std::size_t n = 2 * pieces.size();
   std::vector<V> at(n);
   for (std::size_t k = 0; k < pieces.size(); ++k) at[2 * k] = start_of(pieces[k]), at[2 * k + 1] = end_of(pieces[k]);
-  std::vector<std::size_t> by_x(n);
-  std::iota(by_x.begin(), by_x.end(), 0);
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return at[a].x() < at[b].x(); });
   UnionFind uf(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n && at[by_x[j]].x() - at[by_x[i]].x() <= tol; ++j)
-      if ((at[by_x[j]] - at[by_x[i]]).norm() <= tol) uf.join(by_x[i], by_x[j]);
+  std::vector<std::size_t> order(n);  // ends at one point next to each other: joined, then one of them stands for all
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return at[a].x() < at[b].x() || (at[a].x() == at[b].x() && at[a].y() < at[b].y());
+  });
+  std::vector<std::size_t> distinct;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i > 0 && at[order[i]] == at[order[i - 1]]) uf.join(order[i], order[i - 1]);
+    else distinct.push_back(order[i]);
+  }
+  if (tol > 0) {
+    using Cell = std::pair<long long, long long>;
+    const auto cell_of = [&](const V& p) {
+      // coordinates at most 2^62 cells from the origin (a drawing's size over 1e-9 of it: far inside)
+      const auto clamp = [](double c) { return static_cast<long long>(std::clamp(std::floor(c), -4.6e18, 4.6e18)); };
+      return Cell(clamp(p.x() / tol), clamp(p.y() / tol));
+    };
+    std::map<Cell, std::vector<std::size_t>> cells;
+    for (std::size_t e : distinct) cells[cell_of(at[e])].push_back(e);
+    for (std::size_t e : distinct) {
+      const Cell c = cell_of(at[e]);
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy) {
+          const auto it = cells.find(Cell(c.first + dx, c.second + dy));
+          if (it == cells.end()) continue;
+          for (std::size_t other : it->second)
+            if (other < e && (at[other] - at[e]).norm() <= tol) uf.join(e, other);
+        }
+    }
+  }
   std::vector<std::size_t> node(n);
   for (std::size_t i = 0; i < n; ++i) node[i] = uf.find(i);
   return node;

@@ -73,6 +73,9 @@ double ccw_sweep(double from, double to, double turn) {
 constexpr double kQuarterTurnBulge = 0.41421356237310;
 constexpr double kLargestBulge = 2 / kDxfJoinTolerance;
 
+/// The middle point of the arc a -> b with bulge k: its sagitta h k to the right of the chord's middle.
+V arc_middle(const V& a, const V& b, double k) { return (a + b) / 2 - perp(V(b - a)) * (k / 2); }
+
 void append_bulge_pieces(const V& a, const V& b, double bulge, std::vector<Segment>& out) {
   if (std::abs(bulge) <= std::numeric_limits<double>::epsilon()) {
     out.push_back({{a, b}, {}});
@@ -80,7 +83,7 @@ void append_bulge_pieces(const V& a, const V& b, double bulge, std::vector<Segme
   }
   const V m = (a + b) / 2, n = perp(V(b - a));
   if (std::abs(bulge) > kQuarterTurnBulge) {
-    const V middle = m - n * (bulge / 2);
+    const V middle = arc_middle(a, b, bulge);
     const double half = bulge / (1 + std::hypot(1.0, bulge));
     append_bulge_pieces(a, middle, half, out);
     append_bulge_pieces(middle, b, half, out);
@@ -109,9 +112,15 @@ double round_off(std::initializer_list<V> points) {
 
 // Consecutive bulge arcs of one circle are one arc, one piece of the native parameter: along arcs of
 // different lengths on one circle its speed would jump at every vertex, as along a straight run of lines
-// (docs/scene_format.md, "Straight runs"). Arcs with bulges k and k' are one arc when they turn the same way,
-// together less than a whole turn, and their common vertex lies within round-off of the circle of the whole
-// arc, whose bulge is tan(theta / 4) for the sum of their angles: (k + k') / (1 - k k') (tangent addition).
+// (docs/scene_format.md, "Straight runs"). This is the only place rollkin joins arcs (ARC entities, SVG arcs
+// and the arcs of different polylines are kept as drawn). Rule (docs/reliability.md, "CAD readers (issue
+// 37)"): arcs are joined only when they are one circle, centre and radius. Arcs with bulges k and k' are one
+// arc when they turn the same way, together less than a whole turn, and every drawn arc lies on the circle of
+// the whole arc (bulge tan(theta / 4) for the sum of their angles: (k + k') / (1 - k k'), tangent addition):
+// its ends (the vertices) and its middle point, within round-off plus kOneArcTolerance of the whole chord.
+// Two circles through the same two points are farthest apart at the middle of the arc between them, so the
+// middle decides; the vertices alone do not: two tangent arcs of radii 1 and 2 have their common vertex on
+// the circle of the joined bulge (radius 1.581), which is another circle.
 
 /// The bulge of an arc of bulge `whole` followed by one of bulge `next` taken as one, or 0 when they turn
 /// different ways, reach a whole turn, or exceed kLargestBulge together.
@@ -121,16 +130,22 @@ double joined_bulge(double whole, double next) {
   return std::abs(joined) <= kLargestBulge ? joined : 0;
 }
 
-/// Whether the vertices p[i + 1] .. p[j] lie on the circle of the arc p[i] -> p[j + 1] with bulge `whole`:
-/// within round-off and kOneArcTolerance of its chord (the tangent additions that give `whole` round at each
-/// arc: over a run of a thousand, its circle moves by some 1e-14 of its size).
+/// Whether the point m lies on the circle of the arc a -> c with bulge `whole`: within round-off and
+/// kOneArcTolerance of its chord (the tangent additions that give `whole` round at each arc: over a run of a
+/// thousand, its circle moves by some 1e-14 of its size). Stricter than any tolerance of the drawing's size,
+/// which is at least the chord: an arc not joined is never wrong, only a joint more.
 constexpr double kOneArcTolerance = 1e-12;
 bool on_arc_circle(const V& a, const V& c, double whole, const V& m) {
   return off_bulge_circle(a, c, whole, m) <= round_off({a, m, c}) + kOneArcTolerance * (c - a).norm();
 }
-bool inner_vertices_on_arc(const std::vector<V>& p, std::size_t i, std::size_t j, double whole) {
-  for (std::size_t m = i + 1; m <= j; ++m)
-    if (!on_arc_circle(p[i], p[j + 1], whole, p[m])) return false;
+
+/// Whether the arcs p[i] -> p[i + 1] (bulge k[i]) .. p[j] -> p[j + 1] are all on the circle of the arc
+/// p[i] -> p[j + 1] with bulge `whole`: every inner vertex and every arc's middle point on it.
+bool arcs_on_one_circle(const std::vector<V>& p, const std::vector<double>& k, std::size_t i, std::size_t j, double whole) {
+  for (std::size_t m = i; m <= j; ++m) {
+    if (m > i && !on_arc_circle(p[i], p[j + 1], whole, p[m])) return false;
+    if (!on_arc_circle(p[i], p[j + 1], whole, arc_middle(p[m], p[m + 1], k[m]))) return false;
+  }
   return true;
 }
 
@@ -261,11 +276,14 @@ class Converter {
       if (k[i] != 0 && std::abs(k[i]) <= kLargestBulge)
         for (std::size_t next = i + 1; next < pieces; ++next) {
           const double joined = joined_bulge(whole, k[next]);
-          if (joined == 0 || !on_arc_circle(p[i], p[next + 1], joined, p[next])) break;
+          if (joined == 0 || !on_arc_circle(p[i], p[next + 1], joined, p[next]) ||
+              !on_arc_circle(p[i], p[next + 1], joined, arc_middle(p[i], p[i + 1], k[i])) ||
+              !on_arc_circle(p[i], p[next + 1], joined, arc_middle(p[next], p[next + 1], k[next])))
+            break;
           j = next;
           whole = joined;
         }
-      if (j > i && !inner_vertices_on_arc(p, i, j, whole)) {  // drifted off one circle: the arcs as drawn
+      if (j > i && !arcs_on_one_circle(p, k, i, j, whole)) {  // drifted off one circle: the arcs as drawn
         for (std::size_t m = i; m <= j; ++m) bulge_piece(e, m, p[m], p[m + 1], k[m], piece);
       } else {
         bulge_piece(e, i, p[i], p[j + 1], whole, piece);

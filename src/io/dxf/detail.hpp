@@ -162,14 +162,15 @@ struct Drawing {
 /// `disk_path` when that is the file and nothing follows EOF).
 Drawing read_drawing(const std::string& text, const std::string& disk_path, const std::string& file);
 
-/// What makes every selection of the drawing fail: an unsupported $INSUNITS, two entities with one handle.
+/// What makes every selection of the drawing fail: an unsupported $INSUNITS.
 void check_drawing(const Drawing& drawing, const std::string& file);
 
 /// The drawing's $INSUNITS as out's unit, metres per unit and insunits; InputError for an unsupported code.
 void set_units(DxfContour& out, const Drawing& drawing, const std::string& file);
 
-/// InputError when two entities of `all` (the ENTITIES section) share a handle (compared case-insensitively).
-void check_unique_handles(const std::vector<const RawEntity*>& all, const std::string& file);
+/// InputError naming `handle` when more than one entity (`with_it`, of the ENTITIES section) has it: a selection
+/// by that handle is ambiguous (drawing.cpp).
+void check_one_entity(const std::string& handle, const std::vector<const RawEntity*>& with_it, const std::string& file);
 
 /// The entity types a contour is made of, as messages list them; supported(type) for each.
 inline constexpr const char* kSupported =

@@ -264,23 +264,21 @@ void set_units(DxfContour& out, const Drawing& drawing, const std::string& file)
   }
 }
 
-/// A handle (group 5) names one entity of the drawing: two entities of the ENTITIES section with the same
-/// handle (compared case-insensitively, as selection compares them) make the file invalid, whichever layer
-/// either is on, since selecting by that handle would take both.
-void check_unique_handles(const std::vector<const RawEntity*>& all, const std::string& file) {
-  std::map<std::string, const RawEntity*> first;
-  for (const RawEntity* ep : all) {
-    const RawEntity& e = *ep;
-    if (e.handle.empty()) continue;
-    const auto [it, fresh] = first.emplace(upper(e.handle), &e);
-    if (fresh) continue;
-    const RawEntity& a = *it->second;
-    auto where = [](const RawEntity& x) { return x.label() + " (line " + std::to_string(x.line) + ", layer \"" + x.layer + "\")"; };
-    throw InputError(file, "line " + std::to_string(e.line),
-                     where(a) + " and " + where(e) + " have the same handle " + e.handle +
-                         "; a handle (group 5) names one entity: give one of them a new handle (a CAD program's audit or "
-                         "save does)");
-  }
+/// A handle (group 5) names one entity of the drawing. Rule (docs/reliability.md, "CAD readers (issue 37)"): a
+/// selection by a handle that several entities of the ENTITIES section share (compared case-insensitively, as
+/// selection compares them) is refused naming that handle and its entities; entities sharing a handle never
+/// make the rest of the drawing unreadable.
+void check_one_entity(const std::string& handle, const std::vector<const RawEntity*>& with_it, const std::string& file) {
+  if (with_it.size() < 2) return;
+  auto where = [](const RawEntity& x) { return x.label() + " (line " + std::to_string(x.line) + ", layer \"" + x.layer + "\")"; };
+  std::string names;
+  for (std::size_t i = 0; i < with_it.size() && i < 6; ++i)
+    names += (i ? (i + 1 == with_it.size() ? " and " : ", ") : "") + where(*with_it[i]);
+  if (with_it.size() > 6) names += ", ... (" + std::to_string(with_it.size()) + " entities)";
+  throw InputError(file, "handle " + handle,
+                   "the handle " + handle + " is ambiguous: " + names + " have it; a handle (group 5) names one entity: "
+                   "give one of them a new handle (a CAD program's audit or save does), or select the contour by "
+                   "its layer or a point \"near\" it");
 }
 
 bool supported(const std::string& type) {
@@ -292,7 +290,6 @@ bool supported(const std::string& type) {
 void check_drawing(const Drawing& drawing, const std::string& file) {
   DxfContour units;
   set_units(units, drawing, file);
-  check_unique_handles(drawing.top_level(), file);
 }
 
 bool never_a_curve(const std::string& type) {
@@ -361,10 +358,10 @@ void Placer::place(const RawEntity& top, std::vector<Piece>& out) {
 void Placer::place_in(const RawEntity& e, const Affine& m, const std::string& suffix, std::vector<std::string>& stack,
                       const RawEntity& top, std::vector<Piece>& out) {
   if (never_a_curve(e.type)) return;
-  if (++placed_ > kDxfMaxPlacedEntities)
+  if (e.type == "INSERT") return place_insert(e, m, suffix, stack, top, out);
+  if (++placed_ > kDxfMaxPlacedEntities)  // one piece each (the INSERTs placing it are counted by their copies)
     fail(top, "places more than " + std::to_string(kDxfMaxPlacedEntities) + " entities (nested blocks and MINSERT arrays); "
               "a contour is one chain: explode the blocks it is not in");
-  if (e.type == "INSERT") return place_insert(e, m, suffix, stack, top, out);
   if (!supported(e.type) || !e.delivered)
     throw InputError(file_, "line " + std::to_string(e.line),
                      e.label() + suffix + " is not supported; a contour is made of " + std::string(kSupported));
@@ -422,12 +419,21 @@ void Placer::place_insert(const RawEntity& e, const Affine& m, const std::string
   if (cols < 1 || rows < 1) fail(e, "has " + number(cols) + " columns and " + number(rows) + " rows; each must be at least 1");
   const auto [c, s] = cos_sin_degrees(angle);
   const double mirror = n[2] < 0 ? -1 : 1;
-  const long columns = col_spacing == 0 ? 1 : static_cast<long>(cols), lines = row_spacing == 0 ? 1 : static_cast<long>(rows);
-  placed_ += static_cast<std::size_t>(columns) * static_cast<std::size_t>(lines);  // copies, even of an empty block
-  if (placed_ > kDxfMaxPlacedEntities)
+  // The bound counts what is placed (docs/reliability.md, "CAD readers (issue 37)"): each entity of each copy
+  // once (place_in), a copy of a block without curve entities once (it is visited, places nothing). At least
+  // copies x max(1, the block's curve entities) are to come: above the bound, refused before any is placed.
+  const double copies_d = (col_spacing == 0 ? 1 : std::floor(cols)) * (row_spacing == 0 ? 1 : std::floor(rows));
+  const std::size_t curves = static_cast<std::size_t>(std::count_if(
+      block.entities.begin(), block.entities.end(), [](const RawEntity* x) { return !never_a_curve(x->type); }));
+  const double to_come = copies_d * static_cast<double>(std::max<std::size_t>(curves, 1));
+  if (static_cast<double>(placed_) + to_come > static_cast<double>(kDxfMaxPlacedEntities))
     fail(e, "places more than " + std::to_string(kDxfMaxPlacedEntities) + " entities and copies (nested blocks and "
-              "MINSERT arrays, " + std::to_string(columns) + " x " + std::to_string(lines) + " here); a contour is one "
-              "chain: explode the blocks it is not in");
+              "MINSERT arrays; here " + number(col_spacing == 0 ? 1 : std::floor(cols)) + " x " +
+              number(row_spacing == 0 ? 1 : std::floor(rows)) + " copies of block \"" + block.name + "\" with " +
+              std::to_string(curves) + " curve entit" + (curves == 1 ? "y" : "ies") + "); a contour is one chain: "
+              "explode the blocks it is not in");
+  const long columns = col_spacing == 0 ? 1 : static_cast<long>(cols), lines = row_spacing == 0 ? 1 : static_cast<long>(rows);
+  if (curves == 0) placed_ += static_cast<std::size_t>(copies_d);  // copies that place nothing
   stack.push_back(upper(e.name));
   for (long r = 0; r < lines; ++r)
     for (long k = 0; k < columns; ++k) {

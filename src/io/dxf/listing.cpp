@@ -3,10 +3,13 @@
 // selection by layer or "near" + layer has), each with the scene selector that picks exactly it.
 //
 // Selector: {"type": "dxf", "file": PATH, "layer": L} when the layer holds one chain; otherwise "near" a
-// point on the chain (the middle of its middle segment, else one of 64 points along it) with the layer, when that chain is the nearest to it
-// by more than the tie margin of a selection (kDxfNearTie x the layer's size); otherwise "handles" of its
-// entities when these form exactly this chain alone; otherwise none (empty): a chain with a branch, or an
-// entity that cannot be read (listed as "TYPE HANDLE: why").
+// point on the chain (the middle of its middle segment, else one of 64 points along it) with the layer, when that
+// chain is the nearest to it by more than the tie margin of a selection (kDxfNearTie x the layer's size);
+// otherwise "handles" of its entities when these form exactly this chain alone; otherwise none, with the reason
+// (ListedChain::no_selector): a chain with a branch, entities without handles or whose handles place more. An
+// entity that cannot be read is listed as unreadable with its message, after its layer's chains.
+// Cost: n log n in the layer's pieces (docs/reliability.md, "CAD readers (issue 37)"): the other chains near a
+// point come from an R-tree of segment boxes (SegmentIndex), the pieces of a handle from one map.
 #include "detail.hpp"
 #include "../segment_geometry.hpp"
 
@@ -17,8 +20,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <numeric>
-#include <set>
+#include <optional>
 
 namespace rollkin::io {
 namespace {
@@ -33,17 +38,14 @@ double length_of(const std::vector<Segment>& segments) {
   return sum;
 }
 
-/// Points on a chain that "near" may name it by: the middle of its middle segment first, then up to 64 more
-/// spread along it (where other chains cross the middle, another point names it).
-std::vector<V> near_candidates(const std::vector<Segment>& segments) {
-  std::vector<V> at{segment_point(segments[segments.size() / 2], 0.5)};
-  const std::size_t count = std::min<std::size_t>(64, 4 * segments.size());
-  for (std::size_t k = 0; k < count; ++k) {
-    const double u = (k + 0.5) * static_cast<double>(segments.size()) / static_cast<double>(count);
-    const std::size_t i = std::min(segments.size() - 1, static_cast<std::size_t>(u));
-    at.push_back(segment_point(segments[i], u - static_cast<double>(i)));
+/// The selector's text, or nullopt when a name in it is not UTF-8 text (a layer name in another code page),
+/// which a scene, JSON, cannot hold.
+std::optional<std::string> dumped(const json& j) {
+  try {
+    return j.dump();
+  } catch (const json::type_error&) {
+    return std::nullopt;
   }
-  return at;
 }
 
 json base_selector(const std::string& file, const std::string& layer) {
@@ -69,7 +71,7 @@ class LayerLister {
         placer.place(*e, placed);
         for (Piece& p : placed) all.push_back(std::move(p));
       } catch (const InputError& ex) {
-        unreadable_.push_back(e->label() + ": " + ex.what());
+        unreadable_.push_back({e->label(), ex.what()});
       }
     }
     for (Piece& p : all)
@@ -79,24 +81,26 @@ class LayerLister {
     size_ = pieces_size(pieces_, every);
     tol_ = kDxfJoinTolerance * size_;
     chains_ = connected_chains(pieces_, tol_);
-    for (const Component& c : chains_) {  // control-point boxes: a lower bound of a chain's distance
-      V lo = pieces_[c.pieces.front()].segments.front().points.front(), hi = lo;
-      for (std::size_t k : c.pieces)
-        for (const Segment& s : pieces_[k].segments)
-          for (const V& q : s.points) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-      boxes_.emplace_back(lo, hi);
-    }
-    for (const Component& c : chains_) out.push_back(listed(c));
-    for (const std::string& u : unreadable_) {
+    std::vector<std::pair<const Segment*, std::size_t>> segments;  // every segment with its chain
+    for (std::size_t i = 0; i < chains_.size(); ++i)
+      for (std::size_t k : chains_[i].pieces)
+        for (const Segment& s : pieces_[k].segments) segments.emplace_back(&s, i);
+    index_ = std::make_unique<SegmentIndex>(segments);
+    for (std::size_t k = 0; k < pieces_.size(); ++k) by_handle_[upper(pieces_[k].handle)].push_back(k);
+    for (std::size_t i = 0; i < chains_.size(); ++i) out.push_back(listed(i));
+    for (const auto& [label, message] : unreadable_) {
       ListedChain bad;
       bad.group = layer_;
-      bad.entities = {u};
+      bad.entities = {label};
+      bad.unreadable = message;
+      bad.no_selector = "it cannot be read (see its message)";
       out.push_back(bad);
     }
   }
 
  private:
-  ListedChain listed(const Component& c) const {
+  ListedChain listed(std::size_t i) const {
+    const Component& c = chains_[i];
     ListedChain l;
     l.group = layer_;
     Chain chain;
@@ -107,7 +111,7 @@ class LayerLister {
         l.entities.push_back(pieces_[k].label);
         for (const Segment& s : pieces_[k].segments) l.segments.push_back(s);
       }
-      l.entities.push_back(std::string("(not one contour: ") + ex.what() + ")");
+      l.no_selector = std::string("not one contour: ") + ex.what();
       l.length = length_of(l.segments);
       segments_box(l.segments, l.min, l.max);
       return l;
@@ -119,52 +123,71 @@ class LayerLister {
     segments_box(l.segments, l.min, l.max);
     const BezierPathOptions<double> options;
     l.corners = path_corners(l.segments, l.closed, options.joint_tolerance * pieces_size(pieces_, c.pieces), options.corner_tolerance).size();
-    l.selector = selector(c, l.segments);
+    l.selector = selector(i, l.segments, l.no_selector);
     return l;
   }
 
-  /// The selector that picks exactly this chain (see the file's comment), or empty.
-  std::string selector(const Component& c, const std::vector<Segment>& segments) const {
-    if (unreadable_.empty()) {
-      if (chains_.size() == 1) return base_selector(file_, layer_).dump();
+  /// The selector that picks exactly chain i (see the file's comment), or empty with `why`.
+  std::string selector(std::size_t i, const std::vector<Segment>& segments, std::string& why) const {
+    const Component& c = chains_[i];
+    std::string by_layer;  // why neither the layer nor "near" picks it
+    if (!unreadable_.empty()) {
+      by_layer = "the layer also holds " + std::to_string(unreadable_.size()) + " unreadable entit" +
+                 (unreadable_.size() == 1 ? "y" : "ies") + " (listed), which a selection by layer or \"near\" reads too";
+    } else if (chains_.size() == 1) {
+      if (const auto j = dumped(base_selector(file_, layer_))) return *j;
+      by_layer = "the layer's or the file's name is not UTF-8 text, which a scene (JSON) cannot hold";
+    } else {
+      by_layer = "no point along it is nearer to it than to the layer's other chains by the tie margin";
       for (const V& at : near_candidates(segments))
-        if (nearest_alone(c, at)) {
+        if (nearest_alone(i, at)) {
           json j = base_selector(file_, layer_);
           j["near"] = {at.x(), at.y()};
-          return j.dump();
+          if (const auto text = dumped(j)) return *text;
+          by_layer = "the layer's or the file's name is not UTF-8 text, which a scene (JSON) cannot hold";
+          break;
         }
     }
     std::vector<std::string> handles;
     for (std::size_t k : c.pieces) {
-      if (pieces_[k].handle.empty()) return "";
+      if (pieces_[k].handle.empty()) {
+        why = by_layer + "; and " + pieces_[k].label + " has no handle (group 5): give the entities handles (a CAD "
+              "program's save does) or move the chain to a layer of its own";
+        return "";
+      }
       if (std::find(handles.begin(), handles.end(), pieces_[k].handle) == handles.end()) handles.push_back(pieces_[k].handle);
     }
-    if (!handles_make_only(c, handles)) return "";
+    if (!handles_make_only(c, handles)) {
+      why = by_layer + "; and the handles of its entities also name other pieces (an INSERT's other copies, or an "
+            "entity sharing a handle): move the chain to a layer of its own, or explode the INSERT";
+      return "";
+    }
     json j = base_selector(file_, "");
     j["handles"] = handles;
-    return j.dump();
+    if (const auto text = dumped(j)) return *text;
+    why = by_layer + "; and a handle is not UTF-8 text";
+    return "";
   }
 
-  /// Whether `at` picks component c among the layer's chains ("near" with "layer": the same pieces, tolerance
-  /// and tie margin as the selection).
-  bool nearest_alone(const Component& c, const V& at) const {
-    const double mine = distance_to_component(pieces_, c, at), margin = mine + kDxfNearTie * size_;
-    for (std::size_t i = 0; i < chains_.size(); ++i) {
-      const Component& other = chains_[i];
-      const V outside = (boxes_[i].first - at).cwiseMax(at - boxes_[i].second).cwiseMax(V(0, 0));
-      if (&other == &c || outside.norm() > margin) continue;  // farther than the margin: cannot tie
-      if (distance_to_component(pieces_, other, at) <= margin) return false;
-    }
-    return true;
+  /// Whether `at` picks chain i among the layer's chains ("near" with "layer": the same pieces, tolerance and
+  /// tie margin as the selection): no other chain passes within its distance plus the margin.
+  bool nearest_alone(std::size_t i, const V& at) const {
+    const double mine = distance_to_component(pieces_, chains_[i], at);
+    return !index_->other_within(at, mine + kDxfNearTie * size_, i);
   }
 
   /// Whether the entities with these handles (everything they place) form exactly the pieces of c, in one chain
-  /// (with the tolerance such a selection has: of these pieces alone).
+  /// (with the tolerance such a selection has: of these pieces alone). Handles compared case-insensitively, as
+  /// the selection compares them.
   bool handles_make_only(const Component& c, const std::vector<std::string>& handles) const {
-    const std::set<std::string> wanted(handles.begin(), handles.end());
     std::vector<std::size_t> of;
-    for (std::size_t k = 0; k < pieces_.size(); ++k)
-      if (wanted.count(pieces_[k].handle)) of.push_back(k);
+    for (const std::string& h : handles) {
+      const std::vector<std::size_t>& with = by_handle_.at(upper(h));
+      of.insert(of.end(), with.begin(), with.end());
+      if (of.size() > c.pieces.size()) return false;  // more than this chain: stop before copying them all
+    }
+    std::sort(of.begin(), of.end());
+    of.erase(std::unique(of.begin(), of.end()), of.end());
     if (of != c.pieces) return false;
     std::vector<Piece> alone;
     for (std::size_t k : of) alone.push_back(pieces_[k]);
@@ -178,9 +201,10 @@ class LayerLister {
   std::string file_, layer_;
   std::vector<const RawEntity*> entities_;
   std::vector<Piece> pieces_;
-  std::vector<std::string> unreadable_;
+  std::vector<std::pair<std::string, std::string>> unreadable_;  // entity label, message
   std::vector<Component> chains_;
-  std::vector<std::pair<V, V>> boxes_;  // per chain: its control points' box
+  std::unique_ptr<SegmentIndex> index_;                     // every segment with its chain
+  std::map<std::string, std::vector<std::size_t>> by_handle_;  // upper-case handle -> its pieces, in order
   double size_ = 0, tol_ = 0;
 };
 
@@ -190,16 +214,16 @@ std::vector<ListedChain> list_dxf_contours(const std::string& path) {
   const Drawing drawing = read_drawing(read_input_file(path, "the DXF file"), path, path);
   check_drawing(drawing, path);
   std::vector<std::string> layers;  // first spelling, file order; compared case-insensitively
+  std::map<std::string, std::size_t> layer_index;  // upper-case name -> index in layers
   std::vector<std::vector<const RawEntity*>> on;
   for (const RawEntity* e : drawing.top_level()) {
     if (never_a_curve(e->type)) continue;
-    const auto it = std::find_if(layers.begin(), layers.end(), [&](const std::string& l) { return upper(l) == upper(e->layer); });
-    const std::size_t index = static_cast<std::size_t>(it - layers.begin());
-    if (index == layers.size()) {
+    const auto [it, fresh] = layer_index.emplace(upper(e->layer), layers.size());
+    if (fresh) {
       layers.push_back(e->layer);
       on.emplace_back();
     }
-    on[index].push_back(e);
+    on[it->second].push_back(e);
   }
   std::vector<ListedChain> out;
   for (std::size_t i = 0; i < layers.size(); ++i) LayerLister(drawing, path, layers[i], on[i]).list(out);

@@ -47,16 +47,18 @@ std::vector<const RawEntity*> considered(const std::vector<const RawEntity*>& al
   std::vector<std::string> handles = sel.handles;
   if (!sel.handle.empty()) handles.push_back(sel.handle);
   if (!handles.empty()) {
-    std::map<std::string, const RawEntity*> by_handle;  // (handles are unique: check_unique_handles)
+    std::map<std::string, std::vector<const RawEntity*>> by_handle;
     for (const RawEntity* e : all)
-      if (!e->handle.empty()) by_handle.emplace(upper(e->handle), e);
+      if (!e->handle.empty()) by_handle[upper(e->handle)].push_back(e);
     std::set<const RawEntity*> taken;
     for (const std::string& h : handles) {
-      const auto it = by_handle.find(upper(h));
-      if (it == by_handle.end()) throw InputError(file, "", "no entity with handle " + h + " in the ENTITIES section");
-      if (never_a_curve(it->second->type))
-        throw InputError(file, "handle " + h, it->second->label() + " is not a curve; a contour is made of " + std::string(kSupported));
-      if (taken.insert(it->second).second) chosen.push_back(it->second);
+      const auto found = by_handle.find(upper(h));
+      if (found == by_handle.end()) throw InputError(file, "", "no entity with handle " + h + " in the ENTITIES section");
+      check_one_entity(h, found->second, file);
+      const auto it = found->second.begin();
+      if (never_a_curve((*it)->type))
+        throw InputError(file, "handle " + h, (*it)->label() + " is not a curve; a contour is made of " + std::string(kSupported));
+      if (taken.insert(*it).second) chosen.push_back(*it);
     }
     // in file order, whatever the order of the list: a chain is walked alike however it is selected
     std::sort(chosen.begin(), chosen.end(), [](const RawEntity* a, const RawEntity* b) { return a->line < b->line; });
@@ -163,7 +165,6 @@ DxfContour contour_from(const std::string& text, const std::string& disk_path, c
   set_units(out, drawing, file);
   check_selection(selection, file);
   const std::vector<const RawEntity*> top = drawing.top_level();
-  check_unique_handles(top, file);
   const std::vector<Piece> pieces = pieces_of(drawing, considered(top, selection, file), selection, file, out.notes);
   std::vector<std::size_t> every(pieces.size());
   std::iota(every.begin(), every.end(), 0);

@@ -48,9 +48,11 @@ class DrawnCollector {
   explicit DrawnCollector(const Document& doc) : doc_(doc) {}
 
   /// The element drawn with `parent` mapping its parent's coordinates to the root's. `owner`: its innermost
-  /// ancestor in the document tree that draws it (in set.owners), when it is drawn in place.
+  /// ancestor in the document tree that draws it (in set.owners), when it is drawn in place. `hiding`: what
+  /// its ancestors' display and visibility say; its own are applied unless `selected` (the element the user
+  /// named: drawn whatever hides it, document.hpp, Hiding).
   void element(const pugi::xml_node& n, const Affine& parent, std::size_t transforms, std::size_t owner,
-               std::size_t depth = 0) {
+               const Hiding& hiding, bool selected = false, std::size_t depth = 0) {
     const std::string kind = local_name(n);
     if (depth > kMaxNesting)
       doc_.where(n).fail("is nested more than " + std::to_string(kMaxNesting) + " elements deep below the selected "
@@ -59,22 +61,24 @@ class DrawnCollector {
       doc_.where(n).fail("is a nested <svg> viewport, which rollkin does not apply; ungroup it in the editor");
     if (!is_container(kind) && !is_shape(kind) && kind != element::use) return;  // not drawn, or nothing with a contour
     const std::size_t mine = uses_.empty() ? set.owners.add(n, owner) : owner;
+    const OwnRendering own = own_rendering(n, doc_);  // checked also where it is not applied
+    const Hiding here = selected ? hiding : hiding.below(own, uses_.empty() ? mine : Hiding::inside);
     const Affine m = parent * own_transform(n, doc_, transforms);
     if (is_shape(kind)) {
       if (set.drawn.size() >= kMaxDrawn)
         doc_.where(n).fail("draws more than " + std::to_string(kMaxDrawn) + " shapes (through nested <use>); "
                            "select one group or clone by its id");
-      set.drawn.push_back({n, m, transforms, via_, uses_.empty() ? mine : use_owner_});
+      set.drawn.push_back({n, m, transforms, via_, uses_.empty() ? mine : use_owner_, here.why(), here.hider()});
       return;
     }
-    if (kind == element::use) return use(n, m, transforms, mine, depth);
+    if (kind == element::use) return use(n, m, transforms, mine, here, depth);
     if (const std::string e = unexpanded_entity(doc_, n); !e.empty()) doc_.where(n).fail(e);
     if (kind == element::switch_) {
-      if (const pugi::xml_node c = switch_choice(n, doc_)) element(c, m, transforms, mine, depth + 1);
+      if (const pugi::xml_node c = switch_choice(n, doc_)) element(c, m, transforms, mine, here, false, depth + 1);
       return;
     }
     for (const pugi::xml_node c : n.children())
-      if (c.type() == pugi::node_element) element(c, m, transforms, mine, depth + 1);
+      if (c.type() == pugi::node_element) element(c, m, transforms, mine, here, false, depth + 1);
   }
 
   DrawnSet set;
@@ -82,7 +86,8 @@ class DrawnCollector {
  private:
   /// <use>: its transform, then translate(x, y) (SVG 2, 5.6), then the referenced element, or a <symbol>'s
   /// children through its viewBox (SVG 1.1, 5.5 and 7.8).
-  void use(const pugi::xml_node& n, Affine m, std::size_t transforms, std::size_t owner, std::size_t depth) {
+  void use(const pugi::xml_node& n, Affine m, std::size_t transforms, std::size_t owner, const Hiding& hiding,
+           std::size_t depth) {
     const Where where = doc_.where(n);
     const std::string href = href_of(n);
     if (href.empty()) where.fail("has no href; expected href=\"#id\" of the element it clones");
@@ -112,10 +117,15 @@ class DrawnCollector {
     if (local_name(t) == element::symbol) {
       m = m * own_transform(t, doc_, transforms) * symbol_viewbox(n, t);
       if (const std::string e = unexpanded_entity(doc_, t); !e.empty()) doc_.where(t).fail(e);
+      // display does not apply to a <symbol> (SVG 1.1, 5.5: drawn through a <use> whatever its display); its
+      // visibility is inherited by its content
+      OwnRendering symbol = own_rendering(t, doc_);
+      symbol.display_none = false;
+      const Hiding inner = hiding.below(symbol, Hiding::inside);
       for (const pugi::xml_node c : t.children())
-        if (c.type() == pugi::node_element) element(c, m, transforms, owner, depth + 1);
+        if (c.type() == pugi::node_element) element(c, m, transforms, owner, inner, false, depth + 1);
     } else {
-      element(t, m, transforms, owner, depth + 1);
+      element(t, m, transforms, owner, hiding, false, depth + 1);
     }
     uses_.pop_back();
     via_ = saved_via;
@@ -204,7 +214,7 @@ DrawnSet drawn_by(const Document& doc, const pugi::xml_node& selected) {
   DrawnCollector collect(doc);
   std::size_t owner = Owners::none;
   for (auto a = ancestors.rbegin(); a != ancestors.rend(); ++a) owner = collect.set.owners.add(*a, owner);
-  collect.element(selected, m, transforms, owner);
+  collect.element(selected, m, transforms, owner, Hiding{}, true);  // named by its id: drawn whatever hides it
   return std::move(collect.set);
 }
 
@@ -215,16 +225,21 @@ DrawnSet drawn_in_document(const Document& doc) {
   DrawnCollector collect(doc);
   if (const std::string e = unexpanded_entity(doc, doc.root); !e.empty()) doc.where(doc.root).fail(e);
   for (const pugi::xml_node c : doc.root.children())
-    if (c.type() == pugi::node_element) collect.element(c, Affine{}, 0, Owners::none);
+    if (c.type() == pugi::node_element) collect.element(c, Affine{}, 0, Owners::none, Hiding{});
   return std::move(collect.set);
 }
 
 /// The document's <style> sheets must not set CSS transforms (they could apply to any element).
 void check_style_sheets(const Document& doc) {
   for_each_element(doc.root, [&](const pugi::xml_node& n) {
-    if (local_name(n) == element::style && !css_transform_property(n.text().get()).empty())
+    if (local_name(n) != element::style) return;
+    if (!css_transform_property(n.text().get()).empty())
       doc.where(n).fail("the document's <style> sheet sets a CSS transform (" + css_transform_property(n.text().get()) +
                         "), which rollkin does not apply; use transform attributes instead");
+    if (const std::string p = css_rendering_property(n.text().get()); !p.empty())
+      doc.where(n).fail("the document's <style> sheet sets \"" + p + "\", which rollkin does not apply (it would hide or "
+                        "show elements by selectors rollkin does not match); set display or visibility on the elements "
+                        "instead (attribute or style)");
   });
 }
 

@@ -175,6 +175,8 @@ struct Drawn {
   std::size_t transforms = 0;          // transform attributes applied (for --verbose)
   std::string via;                     // " (drawn by line 20, use "u1")" for a clone, else ""
   std::size_t owner = 0;               // its innermost owner in Owners (below)
+  std::string hidden;                  // why it is not drawn (Hiding::why), or "" when it is
+  std::size_t hider = static_cast<std::size_t>(-1);  // Hiding::hider(): the link of what hides it
 };
 
 /// What draws each shape in the document tree (the element itself, its groups, the outermost <use> of a clone
@@ -186,6 +188,56 @@ struct Owners {
   std::size_t add(const pugi::xml_node& n, std::size_t outer) {
     links.emplace_back(n, outer);
     return links.size() - 1;
+  }
+};
+
+// ---- what is drawn: display and visibility (visibility.cpp) -----------------------------------------
+
+/// What an element's own display and visibility properties say (SVG 1.1, 11.5; the style attribute's
+/// declaration over the presentation attribute, CSS 2, 6.4.4). display is not inherited, but display="none"
+/// takes the element's whole content out of the drawing; visibility is inherited and a descendant may set it
+/// back to visible. Any visibility other than visible, hidden, collapse or inherit is an error naming it.
+struct OwnRendering {
+  bool display_none = false;
+  std::optional<bool> visible;  // its own visibility, when it sets one (not inherit)
+  std::string display_why, visibility_why;  // "display=\"none\" on line 4, g \"layer2\""
+};
+OwnRendering own_rendering(const pugi::xml_node& n, const Document& doc);
+
+/// The document's <style> sheets must not hide or show elements (display: none, a visibility: they could
+/// apply to any element, by selectors rollkin does not match): the first such declaration, or "".
+std::string css_rendering_property(const std::string& sheet);
+
+/// Whether the shapes below a point of the walk are drawn: the innermost display="none" and the innermost
+/// visibility declaration above them, each with the owner link of its element (Owners), or `inside` for an
+/// element inside a <use>'s clone (no link of its own: deeper than every link). Rule (docs/reliability.md, "CAD
+/// readers (issue 37)"): a hidden shape is no candidate of "near", "subpath" or the only-one choice; only the id
+/// of the shape or of an element on the way out to the one that hides it (inclusive) selects it (the selected
+/// element's own display and visibility, and its ancestors', are not applied: the user named it).
+struct Hiding {
+  static constexpr std::size_t none = static_cast<std::size_t>(-1), inside = static_cast<std::size_t>(-2);
+  std::size_t display = none, visibility = none;
+  bool visibility_hidden = false;
+  std::string display_why, visibility_why;
+
+  /// The state below an element with these properties and owner link `link`.
+  Hiding below(const OwnRendering& r, std::size_t link) const {
+    Hiding h = *this;
+    if (r.display_none) h.display = link, h.display_why = r.display_why;
+    if (r.visible) h.visibility = link, h.visibility_hidden = !*r.visible, h.visibility_why = r.visibility_why;
+    return h;
+  }
+  bool hidden() const { return display != none || visibility_hidden; }
+  /// The innermost element that hides (its link, or `inside`), or none.
+  std::size_t hider() const {
+    const std::size_t v = visibility_hidden ? visibility : none;
+    if (display == none) return v;
+    if (v == none) return display;
+    return std::max(display, v);  // links deeper in the walk come later; inside is deepest
+  }
+  std::string why() const {
+    if (!hidden()) return "";
+    return display != none && (!visibility_hidden || display == hider()) ? display_why : visibility_why;
   }
 };
 

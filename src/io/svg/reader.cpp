@@ -269,26 +269,37 @@ std::vector<SvgShape> drawn_shapes(const Document& doc, const DrawnSet& set, con
       shape.unit_factor = unit_factor;
       shape.corners = find_corners(shape, options.corner_tolerance);
       shape.conversion = conversion_line(shape, d.transforms, vp, options);
+      shape.hidden = d.hidden;
       out.push_back(std::move(shape));
       from.push_back(&d);
     }
   }
   // Selectors: an owner with a unique id draws the shapes listing it, in this order (drawn_by walks alike).
-  // Counted per owner link (each link is one element of the document tree, drawing the shapes below it).
+  // Counted per owner link (each link is one element of the document tree, drawing the shapes below it), among
+  // the shapes its own walk draws: its own display and visibility and its ancestors' are not applied there, so
+  // it draws a shape unless what hides the shape lies strictly inside it (document.hpp, Hiding): owners
+  // from the shape out to its hider draw it, owners beyond do not, none draws a shape hidden inside a clone.
   const auto& links = set.owners.links;
+  const auto shown_from = [&](const Drawn& d, auto&& visit) {  // visit(o, shown) for each owner outwards
+    bool passed = d.hider == Hiding::inside;
+    for (std::size_t o = d.owner; o != Owners::none; o = links[o].second) {
+      if (!visit(o, d.hider == Hiding::none || !passed)) return;
+      if (o == d.hider) passed = true;
+    }
+  };
   std::vector<std::size_t> drawn_count(links.size(), 0), seen(links.size(), 0);
   for (const Drawn* d : from)
-    for (std::size_t o = d->owner; o != Owners::none; o = links[o].second) ++drawn_count[o];
+    shown_from(*d, [&](std::size_t o, bool shown) { return drawn_count[o] += shown, true; });
   for (std::size_t s = 0; s < out.size(); ++s) {
-    for (std::size_t o = from[s]->owner; o != Owners::none; o = links[o].second) ++seen[o];
-    for (std::size_t o = from[s]->owner; o != Owners::none; o = links[o].second) {
+    shown_from(*from[s], [&](std::size_t o, bool shown) { return seen[o] += shown, true; });
+    shown_from(*from[s], [&](std::size_t o, bool shown) {
       const pugi::xml_node& n = links[o].first;
       const auto ids = doc.ids.find(n.attribute("id").value());
-      if (!n.attribute("id") || ids == doc.ids.end() || ids->second.size() != 1) continue;
+      if (!shown || !n.attribute("id") || ids == doc.ids.end() || ids->second.size() != 1) return true;
       out[s].selector_id = n.attribute("id").value();
       out[s].selector_subpath = drawn_count[o] > 1 ? seen[o] : 0;
-      break;
-    }
+      return false;
+    });
   }
   return out;
 }

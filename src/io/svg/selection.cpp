@@ -6,6 +6,9 @@
 #include "../segment_geometry.hpp"
 #include "detail.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 namespace rollkin::io::svg_detail {
 namespace {
 
@@ -28,6 +31,18 @@ SvgShape select_shape(std::vector<SvgShape> all, const SvgReadOptions& o, const 
                       const std::string& location, const std::string& what) {
   const auto fail = [&](const std::string& m) -> void { throw InputError(file, location, m); };
   if (all.empty()) fail(what + " draws no shape (path, circle, ellipse, rect, line, polyline or polygon)");
+  // Hidden shapes are no candidates (document.hpp, Hiding): "near", "subpath" and the only one choose
+  // among what the drawing draws.
+  const auto split = std::stable_partition(all.begin(), all.end(), [](const SvgShape& s) { return s.hidden.empty(); });
+  std::vector<SvgShape> hidden(std::make_move_iterator(split), std::make_move_iterator(all.end()));
+  all.erase(split, all.end());
+  if (all.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < hidden.size() && k < 6; ++k) list += (k ? "; " : "") + hidden[k].location + " (" + hidden[k].hidden + ")";
+    if (hidden.size() > 6) list += "; ...";
+    fail(what + " draws " + std::to_string(hidden.size()) + " subpath(s), every one hidden: " + list +
+         "; select a hidden element by its own id (or the id of the element that hides it), or show it in the editor");
+  }
   if (o.subpath && o.near) fail("give \"subpath\" or \"near\", not both");
   const std::string count = what + " draws " + std::to_string(all.size()) + " subpath(s): " + candidate_list(all);
   if (o.subpath) {

@@ -13,6 +13,8 @@ for each drawing, one block
     entity TYPE HANDLE          an entity of the chain (for a block's: TYPE HANDLE in INSERT H [in INSERT H2]),
                                 then the points on it in its own direction:
     p X Y                       world (WCS) coordinates, repr() of the double
+    onearc X Y                  an inner vertex of a polyline whose arcs are one circle (modelspace only):
+                                rollkin reads them as one arc, with no joint there
 
 A quarter of the chains are drawn in a block and placed by an INSERT (rotation, x/y scale +-0.3 .. 3,
 negative and non-uniform, extrusion +-Z, the block's base point), a third of those through a nested INSERT;
@@ -23,8 +25,9 @@ after EOF appear in some drawings; half the drawings list their modelspace entit
 Each drawing has 1 to 4 layers ("several chains per layer" as rollkin reads them: one chain per layer), each
 a closed entity alone (CIRCLE, full ELLIPSE, closed LWPOLYLINE with bulges; 15 %) or a chain of 1 to 4
 entities: LINE (drawn either way), ARC (either way), partial ELLIPSE, LWPOLYLINE and 2D POLYLINE with bulges
-0 or +-10^u for u in [-18, 3] (a quarter of them 2 to 30 arcs of one circle turning one way, which rollkin
-reads as one arc), rational SPLINE (degree 2 or 3, random weights and interior knots, clamped); ARC,
+0 or +-10^u for u in [-18, 3] (a fifth of them 2 to 30 arcs of one circle turning one way, which rollkin
+reads as one arc; a fifth 2 to 6 tangent arcs of different circles: unequal radii, radii 1e-6 apart, or an S
+of equal radii, which rollkin keeps apart), rational SPLINE (degree 2 or 3, random weights and interior knots, clamped); ARC,
 ELLIPSE and the polylines have extrusion (0, 0, 1) or (0, 0, -1) at random.
 The drawing's scale runs from 1e-2 to 1e4 and its offset is up to 10 times its scale.
 
@@ -102,6 +105,7 @@ class Drawing:
         self.ratios = {}  # handle -> axis ratio above 1 of an ELLIPSE (save_with_ratios)
         self.scale = 10 ** rng.uniform(-2, 4)
         self.layers = []  # (name, [(label, points)])
+        self.one_arcs = {}  # handle -> inner vertices (WCS, in the block's coordinates) of a polyline of one arc
 
     def step(self):
         """A random vector of length 0.2 .. 1 times the scale."""
@@ -184,11 +188,45 @@ class Drawing:
         ocs = [po] + [(c[0] + r * math.cos(a), c[1] + r * math.sin(a)) for a in angles[1:]]
         return ocs, [math.tan((b - a) / 4) for a, b in zip(angles, angles[1:])] + [0.0]
 
+    def tangent_arcs(self, p, mirrored):
+        """OCS vertices from p of 2 to 6 arcs, each tangent to the one before, and their bulges: radii unequal
+        (ratios 1.1 .. 3, or 1 + 1e-6: another circle all the same), or equal and turning the other way (an S:
+        two circles), 5 to 120 degrees each. No two consecutive arcs are one circle: rollkin must keep them
+        apart (reading such a pair as one arc through the three points gives another radius)."""
+        po = to_ocs(p, mirrored)
+        heading = self.rng.uniform(0, 2 * math.pi)
+        r = self.scale * self.rng.uniform(0.2, 1)
+        sign = self.rng.choice((-1, 1))
+        ocs, bulges = [po], []
+        for i in range(self.rng.randint(2, 6)):
+            if i > 0:
+                kind = self.rng.random()
+                if kind < 0.2:
+                    sign = -sign  # an S: the same radius, the other way
+                elif kind < 0.35:
+                    r *= self.rng.choice((1 + 1e-6, 1 / (1 + 1e-6)))
+                else:
+                    r *= 10 ** (self.rng.choice((-1, 1)) * self.rng.uniform(0.05, 0.5))
+                    r = min(max(r, 0.1 * self.scale), 3 * self.scale)
+            sweep = math.radians(self.rng.uniform(5, 120))
+            x, y = ocs[-1]
+            cx, cy = x - sign * r * math.sin(heading), y + sign * r * math.cos(heading)  # centre to the left (ccw) or right
+            a0 = math.atan2(y - cy, x - cx)
+            a1 = a0 + sign * sweep
+            ocs.append((cx + r * math.cos(a1), cy + r * math.sin(a1)))
+            bulges.append(sign * math.tan(sweep / 4))
+            heading += sign * sweep
+        return ocs, bulges + [0.0]
+
     def polyline(self, p, attribs, lw):
         n = self.extrusion()
         mirrored = n[2] < 0
-        if self.rng.random() < 0.25:  # arcs of one circle (rollkin reads them as one arc)
+        draw = self.rng.random()
+        one_arc = draw < 0.2
+        if one_arc:  # arcs of one circle (rollkin reads them as one arc)
             ocs, bulges = self.one_circle(p, mirrored)
+        elif draw < 0.4:  # tangent arcs of different circles (rollkin keeps them apart)
+            ocs, bulges = self.tangent_arcs(p, mirrored)
         else:
             wcs = [p]
             for _ in range(self.rng.randint(1, 4)):
@@ -206,6 +244,8 @@ class Drawing:
         pts = []
         for (x0, y0, k), (x1, y1, _) in zip(vertices, vertices[1:]):
             pts += [to_ocs(q, mirrored) for q in bulge_points((x0, y0), (x1, y1), k)]
+        if one_arc and self.space is self.msp:  # the inner vertices, where rollkin's one arc has no joint
+            self.one_arcs[e.dxf.handle] = [to_ocs((x, y), mirrored) for x, y, _ in vertices[1:-1]]
         return e, pts, pts[-1]
 
     def spline(self, p, attribs, first):
@@ -354,6 +394,7 @@ class Drawing:
             for label, pts in entities:
                 out.append(f"entity {label}")
                 out += [f"p {x!r} {y!r}" for x, y in pts]
+                out += [f"onearc {x!r} {y!r}" for x, y in self.one_arcs.get(label.split()[1], []) if " in " not in label]
         return "\n".join(out)
 
 

@@ -19,8 +19,12 @@
 //     requiredExtensions fails (rollkin supports no extension), requiredFeatures holds (SVG 2 removed it),
 //     systemLanguage is an error (the choice would depend on the viewer's language), a <foreignObject> chosen
 //     is an error naming Illustrator's "Preserve Illustrator Editing Capabilities" option;
-//   - <defs>, <symbol> (not through <use>), <clipPath>, <mask>, <marker>, <pattern>, text and images: nothing.
-// The choice of one subpath (read_svg_shape) among those drawn: SvgReadOptions::subpath k (1-based, in the order
+//   - <defs>, <symbol> (not through <use>), <clipPath>, <mask>, <marker>, <pattern>, text and images: nothing;
+//   - an element with display="none" (attribute or style; its whole content), or with visibility="hidden" or
+//     "collapse" (inherited, a descendant may set it back to visible), also in a clone: read but marked hidden
+//     (SvgShape::hidden), no candidate of the choice below; a <style> sheet that sets display: none or a
+//     visibility is an error.
+// The choice of one subpath (read_svg_shape) among those drawn (not hidden): SvgReadOptions::subpath k (1-based, in the order
 // above), or SvgReadOptions::near (the subpath passing nearest to the point, in the coordinates the contour is
 // read in: after steps 1-5; an error naming both when the second nearest is within 1% of the distance, plus
 // 1e-9 of the drawing's size), or the only one; several and no choice is an error listing them. Without an id,
@@ -95,6 +99,11 @@ struct SvgShape {
   /// and its "subpath" among what that id draws (0 when it is all that id draws).
   std::string selector_id;
   std::size_t selector_subpath = 0;
+  /// Why the shape is not drawn ("display=\"none\" on line 4, g \"layer2\"", a visibility), or "" when it is
+  /// drawn. A hidden shape is passed over by "subpath", "near" and the only-one choice; only the id of the shape
+  /// or of an element on the way out to the one that hides it (inclusive) selects it (read_svg_shape: the
+  /// selected element's own display and visibility, and its ancestors', are not applied).
+  std::string hidden;
 };
 
 /// Every subpath the element `id` draws (the whole document when `id` is empty), mapped into scene units
