@@ -42,11 +42,11 @@ struct Columns {
       PairColumns& c = pair[k];
       c.fx = add(p.name + ".Fx");
       c.fy = add(p.name + ".Fy");
-      if (p.kind == PairKind::Prismatic) c.moment = add(p.name + ".M");
-      if (!is_contact(p.kind)) continue;
+      if (p.traits().slides) c.moment = add(p.name + ".M");
+      if (!p.traits().has_contours) continue;
       c.normal = add(p.name + ".normal_force");
       c.friction = add(p.name + ".friction_force");
-      if (p.kind == PairKind::Rolling) c.needed = add(p.name + ".friction_needed");
+      if (p.traits().constrains_sliding) c.needed = add(p.name + ".friction_needed");
       if (!dyn.contact[k].given) continue;
       c.pressure = add(p.name + ".contact_pressure");
       c.half_width = add(p.name + ".contact_half_width");
@@ -160,7 +160,7 @@ void pose_values(const Context& c, const PoseForces<double>& f, double x, double
     const double normal = value(first);
     const bool known = !io::is_empty_cell(normal);
     row[pc.normal] = normal;
-    const bool rolling = m.pairs[k].kind == PairKind::Rolling;
+    const bool rolling = m.pairs[k].traits().constrains_sliding;
     row[pc.friction] = rolling ? value(first + 1) : known ? f.friction_ratio[k] * normal : empty;
     if (known && normal < 0) {
       separation = true;
@@ -277,7 +277,7 @@ SweepForceReport sweep_forces(const io::Scene& scene, const Sweep& sweep, const 
     if (rows.status(r) == SolveStatus::Converged) out.table.status[r] = status;
     out.separation_or_slip = out.separation_or_slip || !out.table.status[r].empty();
     for (std::size_t k = 0; k < m.pairs.size(); ++k) {
-      if (!is_contact(m.pairs[k].kind)) continue;
+      if (!m.pairs[k].traits().has_contours) continue;
       const auto ab = normal_split(layout, f, k);
       if (!ab) continue;
       known[k] = true;
@@ -293,7 +293,7 @@ SweepForceReport sweep_forces(const io::Scene& scene, const Sweep& sweep, const 
   const double range = std::abs(sweep.to - sweep.from) * sweep.unit;
   PoseBetween between(m, reference, sweep.driver);
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
-    if (!is_contact(m.pairs[k].kind)) continue;
+    if (!m.pairs[k].traits().has_contours) continue;
     const std::string head = "separation speed of pair '" + m.pairs[k].name + "': ";
     if (!known[k]) {
       out.summary.push_back(head + "none (its normal force is not unique at any solved pose: redundant constraints)");

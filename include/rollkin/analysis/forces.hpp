@@ -75,26 +75,25 @@ template <class S> ForceLayout::ForceLayout(const Mechanism<S>& m) : first(m.pai
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
     const int pair = static_cast<int>(k);
     first[k] = size();
-    switch (m.pairs[k].kind) {
-      case PairKind::Revolute:
-        unknowns.push_back({pair, ReactionKind::ForceX});
-        unknowns.push_back({pair, ReactionKind::ForceY});
-        break;
-      case PairKind::Prismatic:
-        unknowns.push_back({pair, ReactionKind::GuideNormal});
-        unknowns.push_back({pair, ReactionKind::GuideMoment});
-        break;
-      case PairKind::Cam: unknowns.push_back({pair, ReactionKind::Normal}); break;
-      case PairKind::Rolling:
-        unknowns.push_back({pair, ReactionKind::Normal});
-        unknowns.push_back({pair, ReactionKind::Tangential});
-        break;
+    // The reactions a pair carries follow from what it does (pair/pair_kind.hpp): a turning joint a force,
+    // a sliding one the guide's normal force and moment, a contact the normal force and, when it does not
+    // slip, the tangential one.
+    const PairTraits& does = m.pairs[k].traits();
+    if (does.turns) {
+      unknowns.push_back({pair, ReactionKind::ForceX});
+      unknowns.push_back({pair, ReactionKind::ForceY});
+    } else if (does.slides) {
+      unknowns.push_back({pair, ReactionKind::GuideNormal});
+      unknowns.push_back({pair, ReactionKind::GuideMoment});
+    } else if (does.has_contours) {
+      unknowns.push_back({pair, ReactionKind::Normal});
+      if (does.constrains_sliding) unknowns.push_back({pair, ReactionKind::Tangential});
     }
     count[k] = size() - first[k];
   }
   for (std::size_t d = 0; d < m.drivers.size(); ++d) {
     const Variable& v = m.variables[static_cast<std::size_t>(m.drivers[d])];
-    if (is_contact(m.pairs[static_cast<std::size_t>(v.pair)].kind))
+    if (m.pairs[static_cast<std::size_t>(v.pair)].traits().has_contours)
       throw std::invalid_argument("the input '" + v.name + "' is a contact parameter: its effort is neither a torque nor a force of "
                                   "a joint; drive a revolute or prismatic pair for --forces");
     effort.push_back(size());

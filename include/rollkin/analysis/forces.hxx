@@ -83,7 +83,7 @@ template <class S> void reaction_column(const Mechanism<S>& m, const ForceData<S
       w = wrench(direction, c->point);
       break;
     case ReactionKind::Effort:
-      if (p.kind == PairKind::Revolute) {
+      if (p.traits().turns) {
         w = Vec3<S>(S(0), S(0), S(1));
       } else {  // prismatic: along the guide, at frame B's origin (the guide's moment M balances the rest)
         direction = ga.rotate(p.frame_a.rotate(Vec2<S>(S(1), S(0))));
@@ -213,10 +213,10 @@ PoseForces<S> pose_forces(const Mechanism<S>& m, const Dynamics<S>& dyn, const s
   out.friction_ratio.assign(m.pairs.size(), S(0));
   const S speed_sign = dyn.speed > S(0) ? S(1) : dyn.speed < S(0) ? S(-1) : S(0);
   for (std::size_t k = 0; k < m.pairs.size(); ++k) {
-    if (!is_contact(m.pairs[k].kind)) continue;
+    if (!m.pairs[k].traits().has_contours) continue;
     out.contacts.push_back(detail::contact_analysis(m, static_cast<int>(k), sd.kin.pairs[k], qdot, out.motion));
     const ContactAnalysis<S>& c = out.contacts.back();
-    if (m.pairs[k].kind != PairKind::Cam || !(dyn.friction[k] > S(0))) continue;
+    if (m.pairs[k].traits().constrains_sliding || !(dyn.friction[k] > S(0))) continue;
     // Coulomb friction on B opposes B's sliding over A; none where the sliding is zero to round-off
     // (static friction: not determined by the motion).
     const S motion_size = max(c.velocity_a.norm(), c.velocity_b.norm());

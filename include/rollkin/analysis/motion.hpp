@@ -176,7 +176,7 @@ template <class S> VectorX<S> along_motion(const Mechanism<S>& m, const VectorX<
 /// The point of B where the contact force enters it (top of this file): the centre of B's circle at a cam pair
 /// (a roller on its pin), else the contact point c.
 template <class S> Vec2<S> force_point(const Mechanism<S>& m, const Pair<S>& p, const PoseAnalysis<S>& motion, const Vec2<S>& c) {
-  if (p.kind != PairKind::Cam) return c;
+  if (p.traits().constrains_sliding) return c;  // a rolling contact: the force enters at the contact point
   const std::optional<Vec2<S>> centre = m.contours[p.contour_b].circle_centre();
   return centre ? motion.link_pose[p.link_b].act(*centre) : c;
 }

@@ -95,10 +95,10 @@ class DynamicsReader {
     if (k < 0) {
       std::vector<std::string> names;
       for (const auto& p : m_.pairs)
-        if (is_contact(p.kind)) names.push_back(p.name);
+        if (p.traits().has_contours) names.push_back(p.name);
       fail(path, "unknown pair \"" + name + "\"; the cam and rolling pairs are " + quoted_list(names));
     }
-    if (!is_contact(m_.pairs[static_cast<std::size_t>(k)].kind))
+    if (!m_.pairs[static_cast<std::size_t>(k)].traits().has_contours)
       fail(path, "pair \"" + name + "\" is a " + to_string(m_.pairs[static_cast<std::size_t>(k)].kind) +
                      " pair; friction and contact materials are given for cam and rolling pairs only");
     return k;
