@@ -71,7 +71,7 @@ Row measure(const std::string& name, const Fixture<double>& f, const std::vector
 
 std::vector<double> degrees(double from, double to, double step) {
   std::vector<double> v;
-  for (double d = from; d <= to + 1e-9; d += step) v.push_back(d * pi<double>() / 180);
+  for (double d = from; d <= to + 1e-9; d += step) v.push_back(deg_to_rad(d));
   return v;
 }
 

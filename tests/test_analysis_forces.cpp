@@ -29,7 +29,7 @@ namespace {
 
 const std::string kData = std::string(ROLLKIN_SOURCE_DIR) + "/tests/data/forces/";
 const std::string kExamples = std::string(ROLLKIN_SOURCE_DIR) + "/examples/";
-const double kDeg = M_PI / 180;
+const double kDeg = rollkin::deg_to_rad(1.0);
 
 /// A scene assembled and swept over `inputs` (internal units; default: the scene's sweep).
 struct Solved {

@@ -14,7 +14,7 @@ SpeedUnit parse_speed_unit(const std::string& text, bool angular, LengthUnit sce
   if (angular) {
     if (text == "rpm") return {text, 2 * M_PI / 60, true};
     if (text == "rad/s") return {text, 1, true};
-    if (text == "deg/s") return {text, M_PI / 180, true};
+    if (text == "deg/s") return {text, deg_to_rad(1.0), true};
     throw std::invalid_argument("unknown speed unit \"" + text + "\" for an angle input; expected \"rpm\", \"rad/s\" or \"deg/s\"");
   }
   const std::string suffix = "/s";
