@@ -2,6 +2,7 @@
 
 #include "rollkin/io/format.hpp"
 #include "rollkin/io/input_file.hpp"
+#include "rollkin/io/output_set.hpp"
 
 #include <charconv>
 #include <algorithm>
@@ -239,8 +240,8 @@ PointFileText& PointFileText::header() {
 
 PointFileText& PointFileText::point(const Vec2<double>& p) {
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
-    throw std::invalid_argument("PointFileText::point: (" + format_double(p.x()) + ", " + format_double(p.y()) +
-                                ") is not finite; a point file holds finite coordinates only");
+    throw InternalError("a point to write (" + format_double(p.x()) + ", " + format_double(p.y()) +
+                        ") is not finite; a point file holds finite coordinates only");
   append_double(text_, p.x());
   text_ += ' ';
   append_double(text_, p.y());

@@ -65,7 +65,9 @@ class PointFileText {
   /// The header line "x y"; std::logic_error after a point (the reader takes a header as the first line that is
   /// not a comment only).
   PointFileText& header();
-  /// One line "x y"; std::invalid_argument for a non-finite coordinate (the reader refuses it).
+  /// One line "x y". A non-finite coordinate would make a file the reader refuses: io::InternalError naming the
+  /// point (a defect of rollkin, never the user's input; docs/reliability.md, "Outputs, signals and messages
+  /// (issue 37)").
   PointFileText& point(const Vec2<double>& p);
   PointFileText& points(const std::vector<Vec2<double>>& ps);
 
@@ -78,11 +80,5 @@ class PointFileText {
 
 /// The point file of `points` after the comment `what`: PointFileText().comment(what).points(points).text().
 std::string point_file_text(const std::string& what, const std::vector<Vec2<double>>& points);
-
-/// A point file as rollkin writes it (src/io/point_file_writer.cpp): every line of `comment` as a "# " line, then
-/// one "x y" line per point, each number the shortest text that reads back to the same double, so that
-/// parse_point_text gives the points back bit for bit. A coordinate that is not finite would make a file the
-/// reader refuses: InternalError naming the point (docs/reliability.md, "Outputs, signals and messages").
-std::string point_file_text(const std::string& comment, const std::vector<Vec2<double>>& points);
 
 }  // namespace rollkin::io
