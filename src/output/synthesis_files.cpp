@@ -53,7 +53,7 @@ std::vector<Vec2<double>> follower_contour_points(const synthesis::CamSpec& spec
 
 std::string cam_svg(const synthesis::CamSpec& spec, const synthesis::CamProfile& profile) {
   io::SvgDrawing d(kWidth, kHeight, kMargin);
-  d.set_title(base_name(spec.file) + ": cam and follower at the law's start");
+  d.set_title(base_name(spec.file) + ": at the law's start");
   d.add_polyline(profile.points, body_stroke(1), true, body_fill(1), "cam");
   const Vec2<double> f = profile.follower_origin;
   switch (spec.contact) {
