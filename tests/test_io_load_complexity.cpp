@@ -293,6 +293,7 @@ std::string gear_table(std::size_t n) {
 void load_gear_spec(const std::string& text, const std::string& file) {
   rollkin::synthesis::gear_spec_from_document(rollkin::io::parse_json_document(text, file), file,
                                               fs::path(file).parent_path().string());
+}
 
 /// A DXF drawing of one MINSERT of a block holding one LINE of length 0.5, in `columns` x `rows` copies spaced
 /// 1 apart: as many chains on layer CAM.
