@@ -233,6 +233,7 @@ BOOST_AUTO_TEST_CASE(writer_refuses_what_the_reader_refuses) {
   rollkin::io::PointFileText file;
   file.point({0, 0});
   BOOST_CHECK_THROW(file.header(), std::logic_error);  // a header after a point would be read as a bad point
+}
 
 // A table (a motion law, a gear transmission, a scan) names its two columns as it likes (issue 37: a law file
 // with the header "theta_deg,s_mm" was refused unless it said "x y"); the same reader, so every table reader
