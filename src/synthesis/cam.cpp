@@ -167,7 +167,7 @@ json cam_scene(const CamSpec& spec, const CamProfile& profile, const std::string
   // The follower's frame: the world's axes at its origin for a translating follower (the prismatic pair's frame
   // on the follower is turned back by its 90 degrees), the arm's frame at the pivot for an oscillating one.
   // The follower's variable is the law's displacement s itself (zero on the base circle, where the spec places
-  // the follower), so it starts at s(0) (docs/synthesis.md, "The scene"): the round trip compares it with s.
+  // the follower), so it starts at s(0) (docs/synthesis.md, "`rollkin synthesize cam SPEC.json --out PREFIX`"): the round trip compares it with s.
   const double s0 = (*spec.law)(0.0).s;
   const double frame_angle = spec.motion == FollowerMotion::Translating ? 0.0 : spec.start_angle + s0;
   std::string follower_contour_name;

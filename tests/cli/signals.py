@@ -98,7 +98,7 @@ RUNS = [
      [["out/osc.txt", "out/osc.dxf", "out/osc.svg", "out/osc.json"]]),
     ("synthesize gears",
      ["synthesize", "gears", "scenes/gears_elliptical.json", "--out", "out/g"],
-     [["out/g.1.txt", "out/g.2.txt", "out/g.dxf", "out/g.json"]]),
+     [["out/g.1.txt", "out/g.2.txt", "out/g.dxf", "out/g.svg", "out/g.json"]]),
 ]
 
 

@@ -113,7 +113,7 @@ def test_chains_without_a_selector_and_unreadable_entities(tmp_path):
                            line("2C", "Y", (0, 5), (1, 5)), line("2D", "Y", (1, 5), (2, 5)), line("2E", "Y", (1, 5), (1, 6))))
     chains = rollkin.contours(drawing)
     assert [c["group"] for c in chains] == ["OK", "BAD", "Y"]
-    assert chains[0]["selector"] == {"type": "dxf", "file": "parts.dxf", "layer": "OK"} and "no_selector" not in chains[0]
+    assert chains[0]["selector"] == {"type": "dxf", "file": str(drawing), "layer": "OK"} and "no_selector" not in chains[0]
     assert chains[1]["selector"] is None and chains[1]["length"] is None and chains[1]["min"] is None
     assert "ELLIPSE 2B has a zero major axis" in chains[1]["unreadable"]
     assert chains[2]["selector"] is None and "3 entity ends meet at (1, 5)" in chains[2]["no_selector"]

@@ -684,7 +684,8 @@ def test_centrodes_of_the_anti_parallelogram_are_the_ellipses_and_the_clis_dxf(t
     proc = subprocess.run([CLI, "centrodes", str(SRC / "examples" / "antiparallelogram.json"), "--links", "crank",
                            "follower", "--out", str(tmp_path / "cli"), "--step", "0.5", "--dxf", str(tmp_path / "cli.dxf")],
                           capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
+    # exit 1: the sweep has singular poses (the crank and follower in line), as `rollkin solve` reports them
+    assert proc.returncode == 1 and "singular" in proc.stderr, proc.stderr
     assert (tmp_path / "py.dxf").read_bytes() == (tmp_path / "cli.dxf").read_bytes()
     points = np.loadtxt(tmp_path / "cli.crank.txt", skiprows=3)  # two comment lines, the header "x y"
     assert np.max(np.abs(points - c["a"])) < 1e-12
@@ -848,7 +849,7 @@ def test_the_centrode_of_two_links_joined_by_a_revolute_is_one_point(tmp_path):
     assert np.max(np.abs(c["a"] - [0, 2])) < 1e-12 and np.max(np.abs(c["b"])) < 1e-12
     proc = subprocess.run([CLI, "centrodes", str(anti), "--links", "crank", "coupler", "--out", str(tmp_path / "cc"),
                            "--dxf", str(tmp_path / "cc.dxf")], capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
+    assert proc.returncode == 1 and "singular" in proc.stderr, proc.stderr  # the sweep's singular poses, as solve reports them
     assert "is one point, (0, 2) in link 'crank''s frame and (0, 0) in link 'coupler''s frame" in proc.stdout
     assert "--dxf '%s' not written" % (tmp_path / "cc.dxf") in proc.stderr
     assert not (tmp_path / "cc.dxf").exists()

@@ -1,4 +1,4 @@
-// The sweep of a synthesis round trip (docs/synthesis.md, "the round trip"): the scene a synthesis wrote is
+// The sweep of a synthesis round trip (docs/synthesis.md, "`rollkin synthesize cam SPEC.json --out PREFIX`" and "Non-circular gears"): the scene a synthesis wrote is
 // assembled and swept by the library's own path, the one `rollkin solve` takes (assemble, rollkin::sweep with
 // the default ContinuationSettings, summarise), so a pose has one status whichever command solves it: a pose
 // is solved when its status is `ok` (Converged); a `singular` pose, a limit or a pose not reached is a problem
