@@ -247,10 +247,10 @@ template <class S> class MotionLaw {
   const std::vector<LawSegment<S>>& segments() const { return segments_; }
 
   /// s, s', s'', s''' at cam angle theta (any real: the law repeats every turn).
-  LawValue<S> operator()(const S& theta) const { return is_table() ? table_value(theta, false) : evaluate(wrap(theta), false); }
+  LawValue<S> operator()(const S& theta) const { return is_table() ? table_value(theta, false) : evaluate(wrap_to_turn(theta), false); }
 
   /// The one-sided value just before theta (the previous segment's or span's end) at a join.
-  LawValue<S> left_of(const S& theta) const { return is_table() ? table_value(theta, true) : evaluate(wrap(theta), true); }
+  LawValue<S> left_of(const S& theta) const { return is_table() ? table_value(theta, true) : evaluate(wrap_to_turn(theta), true); }
 
   /// Largest |s - s(0)|: the stroke.
   S stroke(int samples = 3600) const {
@@ -291,14 +291,6 @@ template <class S> class MotionLaw {
   }
 
  private:
-  static S wrap(const S& theta) {
-    using std::floor;
-    const S two_pi = S(2) * pi<S>();
-    S w = theta - two_pi * floor(theta / two_pi);
-    if (w >= two_pi) w -= two_pi;
-    return w;
-  }
-
   /// A table's spline at theta (any real: periodic_spline.hpp takes it to the table's turn).
   LawValue<S> table_value(const S& theta, bool left) const {
     const std::array<S, 4> v = table_(theta, left);

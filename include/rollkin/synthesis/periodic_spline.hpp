@@ -35,6 +35,15 @@
 
 namespace rollkin::synthesis {
 
+/// x taken into one turn, [0, 2 pi): the angle a periodic table or law is evaluated at.
+template <class S> S wrap_to_turn(const S& x) {
+  using std::floor;
+  const S turn = S(2) * pi<S>();
+  S w = x - turn * floor(x / turn);
+  if (w >= turn) w -= turn;
+  return w;
+}
+
 namespace detail {
 
 /// A cyclic banded system A x = b over `nodes` unknowns whose non-zeros join nodes at most `node_half_width`
@@ -104,7 +113,7 @@ template <class S> class PeriodicSpline {
     const S turn = S(2) * pi<S>();
     const std::size_t n = x_.size();
     const S first = x_.front();
-    S at = x >= first && x < first + turn ? x : S(first + wrapped(S(x - first)));  // a knot stays exact
+    S at = x >= first && x < first + turn ? x : S(first + wrap_to_turn(S(x - first)));  // a knot stays exact
     if (left && at == first) at += turn;
     const auto begin = x_.begin();
     // Right: the last knot <= at. Left: the span whose end is the first knot >= at (the closing span if none).
@@ -114,13 +123,6 @@ template <class S> class PeriodicSpline {
   }
 
  private:
-  static S wrapped(const S& x) {
-    using std::floor;
-    const S turn = S(2) * pi<S>();
-    S w = x - turn * floor(x / turn);
-    if (w >= turn) w -= turn;
-    return w;
-  }
   S knot(std::size_t k) const { return k < x_.size() ? x_[k] : S(x_[k - x_.size()] + S(2) * pi<S>()); }
   S h(std::size_t k) const { return knot(k + 1) - knot(k); }
 
